@@ -1,0 +1,334 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "AnalyticShapes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace medialaxis
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+double Distance2(const Point3& a, const Point3& b)
+{
+  const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+  return dx * dx + dy * dy + dz * dz;
+}
+
+// Splits quad (a, b, c, d), given counter-clockwise seen from outside, along
+// its shorter diagonal.
+void AddQuad(TriangleMesh& mesh, Index a, Index b, Index c, Index d)
+{
+  if (Distance2(mesh.Points[a], mesh.Points[c]) <= Distance2(mesh.Points[b], mesh.Points[d]))
+  {
+    mesh.Triangles.push_back({ a, b, c });
+    mesh.Triangles.push_back({ a, c, d });
+  }
+  else
+  {
+    mesh.Triangles.push_back({ a, b, d });
+    mesh.Triangles.push_back({ b, c, d });
+  }
+}
+
+// Lattice coordinates along one axis, on the surface of the enclosing box:
+// the fillet band maps tan-uniformly so that arc segments are equal-angle.
+std::vector<double> AxisSamples(double half, double rho, int bandSegments, double spacing)
+{
+  const double inner = half - rho;
+  std::vector<double> band; // offsets beyond the inner half-extent, 0..rho
+  if (rho > 0.0)
+  {
+    for (int i = 0; i <= bandSegments; ++i)
+    {
+      band.push_back(rho * std::tan(0.25 * Pi * i / bandSegments));
+    }
+  }
+  else
+  {
+    band.push_back(0.0);
+  }
+  std::vector<double> samples;
+  for (auto it = band.rbegin(); it != band.rend(); ++it)
+  {
+    samples.push_back(-inner - *it);
+  }
+  const int innerSegments =
+    inner > 0.0 ? std::max(1, static_cast<int>(std::lround(2.0 * inner / spacing))) : 0;
+  for (int i = 1; i < innerSegments; ++i)
+  {
+    samples.push_back(-inner + 2.0 * inner * i / innerSegments);
+  }
+  for (std::size_t i = (innerSegments == 0 ? 1 : 0); i < band.size(); ++i)
+  {
+    samples.push_back(inner + band[i]);
+  }
+  return samples;
+}
+
+void RequirePositive(double value, const char* what)
+{
+  if (!(value > 0.0) || !std::isfinite(value))
+  {
+    throw std::invalid_argument(std::string(what) + " must be positive and finite");
+  }
+}
+}
+
+TriangleMesh MakeRoundedBox(const Point3& sides, double filletRadius, int resolution)
+{
+  for (double s : sides)
+  {
+    RequirePositive(s, "box side");
+  }
+  const double minHalf = 0.5 * std::min({ sides[0], sides[1], sides[2] });
+  if (!(filletRadius >= 0.0) || filletRadius > minHalf * (1.0 + 1e-12))
+  {
+    throw std::invalid_argument("fillet radius must lie in [0, smallest side / 2]");
+  }
+  const double rho = std::min(filletRadius, minHalf);
+  resolution = std::max(resolution, 2);
+  const int bandSegments = (resolution + 1) / 2;
+  const double maxSide = std::max({ sides[0], sides[1], sides[2] });
+  // Flat parts: edges as long as the fillet's arc segments, but no finer than
+  // maxSide / (2 resolution), so that small fillets do not explode the count.
+  const double spacing = rho > 0.0
+    ? std::max(0.5 * Pi * rho / (2 * bandSegments), 0.5 * maxSide / resolution)
+    : maxSide / resolution;
+
+  std::vector<double> axis[3];
+  double inner[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double half = 0.5 * sides[a];
+    // Sides equal to 2 rho have no flat part: avoid a sliver from rounding.
+    const double r = (half - rho) <= 1e-12 * half ? half : rho;
+    axis[a] = AxisSamples(half, r, bandSegments, spacing);
+    inner[a] = half - r;
+  }
+  const Index n[3] = { static_cast<Index>(axis[0].size()), static_cast<Index>(axis[1].size()),
+    static_cast<Index>(axis[2].size()) };
+
+  TriangleMesh mesh;
+  std::vector<Index> nodeId(static_cast<std::size_t>(n[0] * n[1] * n[2]), -1);
+  auto node = [&](Index i, Index j, Index k) {
+    Index& id = nodeId[static_cast<std::size_t>((i * n[1] + j) * n[2] + k)];
+    if (id < 0)
+    {
+      const Point3 p{ axis[0][i], axis[1][j], axis[2][k] };
+      Point3 q, d;
+      double length2 = 0.0;
+      for (int a = 0; a < 3; ++a)
+      {
+        q[a] = std::clamp(p[a], -inner[a], inner[a]);
+        d[a] = p[a] - q[a];
+        length2 += d[a] * d[a];
+      }
+      Point3 x = p;
+      if (length2 > 0.0 && rho > 0.0)
+      {
+        const double scale = rho / std::sqrt(length2);
+        for (int a = 0; a < 3; ++a)
+        {
+          x[a] = q[a] + d[a] * scale;
+        }
+      }
+      id = static_cast<Index>(mesh.Points.size());
+      mesh.Points.push_back(x);
+    }
+    return id;
+  };
+
+  for (int a = 0; a < 3; ++a)
+  {
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    for (int side = 0; side < 2; ++side)
+    {
+      const Index fixed = side == 0 ? 0 : n[a] - 1;
+      for (Index u = 0; u + 1 < n[b]; ++u)
+      {
+        for (Index v = 0; v + 1 < n[c]; ++v)
+        {
+          Index ids[4];
+          const Index uu[4] = { u, u + 1, u + 1, u };
+          const Index vv[4] = { v, v, v + 1, v + 1 };
+          for (int corner = 0; corner < 4; ++corner)
+          {
+            Index ijk[3];
+            ijk[a] = fixed;
+            ijk[b] = uu[corner];
+            ijk[c] = vv[corner];
+            ids[corner] = node(ijk[0], ijk[1], ijk[2]);
+          }
+          if (side == 1)
+          {
+            AddQuad(mesh, ids[0], ids[1], ids[2], ids[3]);
+          }
+          else
+          {
+            AddQuad(mesh, ids[0], ids[3], ids[2], ids[1]);
+          }
+        }
+      }
+    }
+  }
+  return mesh;
+}
+
+TriangleMesh MakeSphere(double radius, int resolution)
+{
+  RequirePositive(radius, "sphere radius");
+  return MakeRoundedBox({ 2 * radius, 2 * radius, 2 * radius }, radius, resolution);
+}
+
+TriangleMesh MakeCapsule(double radius, double axisLength, int resolution)
+{
+  RequirePositive(radius, "capsule radius");
+  if (!(axisLength >= 0.0) || !std::isfinite(axisLength))
+  {
+    throw std::invalid_argument("capsule axis length must be non-negative and finite");
+  }
+  return MakeRoundedBox({ 2 * radius, 2 * radius, axisLength + 2 * radius }, radius, resolution);
+}
+
+TriangleMesh MakeTorus(double majorRadius, double minorRadius, int resolution)
+{
+  RequirePositive(majorRadius, "torus major radius");
+  RequirePositive(minorRadius, "torus minor radius");
+  if (!(minorRadius < majorRadius))
+  {
+    throw std::invalid_argument("torus minor radius must be smaller than its major radius");
+  }
+  resolution = std::max(resolution, 2);
+  const int nv = 4 * resolution;
+  const int nu = std::max(3, static_cast<int>(std::lround(nv * majorRadius / minorRadius)));
+  TriangleMesh mesh;
+  mesh.Points.reserve(static_cast<std::size_t>(nu) * nv);
+  for (int i = 0; i < nu; ++i)
+  {
+    const double u = 2.0 * Pi * i / nu;
+    for (int j = 0; j < nv; ++j)
+    {
+      const double v = 2.0 * Pi * j / nv;
+      const double ring = majorRadius + minorRadius * std::cos(v);
+      mesh.Points.push_back({ ring * std::cos(u), ring * std::sin(u), minorRadius * std::sin(v) });
+    }
+  }
+  auto id = [nu, nv](int i, int j) { return static_cast<Index>((i % nu) * nv + (j % nv)); };
+  for (int i = 0; i < nu; ++i)
+  {
+    for (int j = 0; j < nv; ++j)
+    {
+      AddQuad(mesh, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+    }
+  }
+  return mesh;
+}
+
+TriangleMesh MakeCylinder(double radius, double height, int resolution)
+{
+  RequirePositive(radius, "cylinder radius");
+  RequirePositive(height, "cylinder height");
+  resolution = std::max(resolution, 2);
+  const int around = 4 * resolution;
+  const double spacing = 2.0 * Pi * radius / around;
+  const int rows = std::max(1, static_cast<int>(std::lround(height / spacing)));
+  const int rings = std::max(1, static_cast<int>(std::lround(radius / spacing)));
+  TriangleMesh mesh;
+  // Side rows 0..rows (z from -h/2 to h/2), then cap rings inward, then centres.
+  auto ringPoint = [&](double r, int k, double z) {
+    const double t = 2.0 * Pi * k / around;
+    return Point3{ r * std::cos(t), r * std::sin(t), z };
+  };
+  for (int row = 0; row <= rows; ++row)
+  {
+    const double z = -0.5 * height + height * row / rows;
+    for (int k = 0; k < around; ++k)
+    {
+      mesh.Points.push_back(ringPoint(radius, k, z));
+    }
+  }
+  auto side = [around](int row, int k) { return static_cast<Index>(row * around + k % around); };
+  for (int row = 0; row < rows; ++row)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      AddQuad(mesh, side(row, k), side(row, k + 1), side(row + 1, k + 1), side(row + 1, k));
+    }
+  }
+  // Caps: ring 0 is the rim (shared with the side), ring `rings` the centre.
+  for (int top = 0; top < 2; ++top)
+  {
+    const double z = top ? 0.5 * height : -0.5 * height;
+    std::vector<Index> previous(around);
+    for (int k = 0; k < around; ++k)
+    {
+      previous[k] = side(top ? rows : 0, k);
+    }
+    for (int ring = 1; ring < rings; ++ring)
+    {
+      const double r = radius * (rings - ring) / rings;
+      std::vector<Index> current(around);
+      for (int k = 0; k < around; ++k)
+      {
+        current[k] = static_cast<Index>(mesh.Points.size());
+        mesh.Points.push_back(ringPoint(r, k, z));
+      }
+      for (int k = 0; k < around; ++k)
+      {
+        const int k1 = (k + 1) % around;
+        if (top)
+        {
+          AddQuad(mesh, previous[k], previous[k1], current[k1], current[k]);
+        }
+        else
+        {
+          AddQuad(mesh, previous[k], current[k], current[k1], previous[k1]);
+        }
+      }
+      previous.swap(current);
+    }
+    const Index centre = static_cast<Index>(mesh.Points.size());
+    mesh.Points.push_back({ 0.0, 0.0, z });
+    for (int k = 0; k < around; ++k)
+    {
+      const int k1 = (k + 1) % around;
+      if (top)
+      {
+        mesh.Triangles.push_back({ previous[k], previous[k1], centre });
+      }
+      else
+      {
+        mesh.Triangles.push_back({ previous[k], centre, previous[k1] });
+      }
+    }
+  }
+  return mesh;
+}
+
+AreaVolume RoundedBoxAreaVolume(const Point3& sides, double r)
+{
+  const double a = sides[0] - 2 * r, b = sides[1] - 2 * r, c = sides[2] - 2 * r;
+  return { 2 * (a * b + b * c + c * a) + 2 * Pi * r * (a + b + c) + 4 * Pi * r * r,
+    a * b * c + 2 * r * (a * b + b * c + c * a) + Pi * r * r * (a + b + c) +
+      4.0 / 3.0 * Pi * r * r * r };
+}
+
+AreaVolume CapsuleAreaVolume(double radius, double axisLength)
+{
+  return RoundedBoxAreaVolume({ 2 * radius, 2 * radius, axisLength + 2 * radius }, radius);
+}
+
+AreaVolume TorusAreaVolume(double majorRadius, double minorRadius)
+{
+  return { 4 * Pi * Pi * majorRadius * minorRadius,
+    2 * Pi * Pi * majorRadius * minorRadius * minorRadius };
+}
+
+AreaVolume CylinderAreaVolume(double radius, double height)
+{
+  return { 2 * Pi * radius * height + 2 * Pi * radius * radius, Pi * radius * radius * height };
+}
+}

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Closed, manifold, outward-oriented triangle meshes of shapes whose medial
+// axis is known exactly: the ground truths of the test suite. Every vertex
+// lies exactly on the analytic surface.
+#ifndef medialaxis_AnalyticShapes_h
+#define medialaxis_AnalyticShapes_h
+
+#include "PolygonMesh.h"
+
+namespace medialaxis
+{
+/// An axis-aligned box of the given full side lengths, centred at the origin,
+/// whose edges and corners are rounded with radius `filletRadius` (quarter
+/// cylinders on edges, sphere octants on corners): the Minkowski sum of a
+/// smaller box with a ball. filletRadius = 0 gives a sharp box; equal sides
+/// and filletRadius = side / 2 give a sphere. `resolution` is the number of
+/// segments along a quarter circle (a sharp box uses it per side).
+TriangleMesh MakeRoundedBox(const Point3& sides, double filletRadius, int resolution);
+
+/// Sphere centred at the origin (a cube-sphere: rounded box with no flat part).
+TriangleMesh MakeSphere(double radius, int resolution);
+
+/// Capsule along z: the points within `radius` of the segment from
+/// (0, 0, -axisLength / 2) to (0, 0, axisLength / 2).
+TriangleMesh MakeCapsule(double radius, double axisLength, int resolution);
+
+/// Torus around the z axis with the given centre-circle and tube radii.
+TriangleMesh MakeTorus(double majorRadius, double minorRadius, int resolution);
+
+/// Closed cylinder along z, centred at the origin.
+TriangleMesh MakeCylinder(double radius, double height, int resolution);
+
+/// Exact area and volume of the analytic shapes above (not of their meshes).
+struct AreaVolume
+{
+  double Area;
+  double Volume;
+};
+AreaVolume RoundedBoxAreaVolume(const Point3& sides, double filletRadius);
+AreaVolume CapsuleAreaVolume(double radius, double axisLength);
+AreaVolume TorusAreaVolume(double majorRadius, double minorRadius);
+AreaVolume CylinderAreaVolume(double radius, double height);
+}
+
+#endif

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/**
+ * @class   vtkAnalyticShapeSource
+ * @brief   Closed triangle meshes of shapes whose medial axis is known exactly.
+ *
+ * Produces a closed, manifold, outward-oriented triangle mesh whose vertices
+ * lie exactly on the chosen analytic surface, centred at Center:
+ *
+ * - Sphere (Radius): medial axis = its centre, radius Radius.
+ * - Capsule (Radius, Length = axis length, along z): medial axis = the axis
+ *   segment, radius Radius.
+ * - Torus (MajorRadius, MinorRadius, around z): medial axis = the centre
+ *   circle, radius MinorRadius.
+ * - Box (XLength, YLength, ZLength): sharp edges.
+ * - RoundedBox (side lengths and FilletRadius): every edge rounded by a
+ *   quarter cylinder and every corner by a sphere octant of radius
+ *   FilletRadius; the fillet centre lines lie at FilletRadius from both
+ *   adjacent faces.
+ * - Cylinder (Radius, Length = height, along z).
+ *
+ * Resolution is the number of segments along a quarter circle (for the sharp
+ * box, along its longest side). GetExactArea() / GetExactVolume() give the
+ * area and volume of the exact shape (not of its mesh) for tests.
+ */
+#ifndef vtkAnalyticShapeSource_h
+#define vtkAnalyticShapeSource_h
+
+#include "vtkMedialAxisFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class VTKMEDIALAXISFILTERS_EXPORT vtkAnalyticShapeSource : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkAnalyticShapeSource* New();
+  vtkTypeMacro(vtkAnalyticShapeSource, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ShapeType
+  {
+    SPHERE = 0,
+    CAPSULE = 1,
+    TORUS = 2,
+    BOX = 3,
+    ROUNDED_BOX = 4,
+    CYLINDER = 5
+  };
+
+  ///@{
+  /// Which shape to generate (default SPHERE).
+  vtkSetClampMacro(Shape, int, SPHERE, CYLINDER);
+  vtkGetMacro(Shape, int);
+  void SetShapeToSphere() { this->SetShape(SPHERE); }
+  void SetShapeToCapsule() { this->SetShape(CAPSULE); }
+  void SetShapeToTorus() { this->SetShape(TORUS); }
+  void SetShapeToBox() { this->SetShape(BOX); }
+  void SetShapeToRoundedBox() { this->SetShape(ROUNDED_BOX); }
+  void SetShapeToCylinder() { this->SetShape(CYLINDER); }
+  ///@}
+
+  ///@{
+  /// Radius of the sphere, capsule and cylinder (default 1).
+  vtkSetClampMacro(Radius, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  ///@{
+  /// Axis length of the capsule, height of the cylinder (default 2).
+  vtkSetClampMacro(Length, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Length, double);
+  ///@}
+
+  ///@{
+  /// Torus centre-circle radius (default 2) and tube radius (default 0.5).
+  vtkSetClampMacro(MajorRadius, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(MajorRadius, double);
+  vtkSetClampMacro(MinorRadius, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(MinorRadius, double);
+  ///@}
+
+  ///@{
+  /// Full side lengths of the box and rounded box (default 2 x 2 x 2).
+  vtkSetClampMacro(XLength, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(XLength, double);
+  vtkSetClampMacro(YLength, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(YLength, double);
+  vtkSetClampMacro(ZLength, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(ZLength, double);
+  ///@}
+
+  ///@{
+  /// Fillet radius of the rounded box, at most half its smallest side
+  /// (default 0.2).
+  vtkSetClampMacro(FilletRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(FilletRadius, double);
+  ///@}
+
+  ///@{
+  /// Segments along a quarter circle (default 16).
+  vtkSetClampMacro(Resolution, int, 2, 4096);
+  vtkGetMacro(Resolution, int);
+  ///@}
+
+  ///@{
+  /// Translation of the shape (default origin).
+  vtkSetVector3Macro(Center, double);
+  vtkGetVector3Macro(Center, double);
+  ///@}
+
+  /// Area and volume of the exact shape with the current parameters.
+  double GetExactArea();
+  double GetExactVolume();
+
+protected:
+  vtkAnalyticShapeSource();
+  ~vtkAnalyticShapeSource() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Shape = SPHERE;
+  double Radius = 1.0;
+  double Length = 2.0;
+  double MajorRadius = 2.0;
+  double MinorRadius = 0.5;
+  double XLength = 2.0;
+  double YLength = 2.0;
+  double ZLength = 2.0;
+  double FilletRadius = 0.2;
+  int Resolution = 16;
+  double Center[3] = { 0.0, 0.0, 0.0 };
+
+private:
+  vtkAnalyticShapeSource(const vtkAnalyticShapeSource&) = delete;
+  void operator=(const vtkAnalyticShapeSource&) = delete;
+};
+
+#endif

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vtkMedialMeshConversion.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+namespace medialaxis
+{
+void MedialMeshToPolyData(const MedialMesh& mesh, vtkPolyData* output)
+{
+  const vtkIdType nv = static_cast<vtkIdType>(mesh.Centers.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(nv);
+  vtkNew<vtkDoubleArray> radius;
+  radius->SetName(RadiusArrayName);
+  radius->SetNumberOfTuples(nv);
+  for (vtkIdType i = 0; i < nv; ++i)
+  {
+    points->SetPoint(i, mesh.Centers[i].data());
+    radius->SetValue(i, mesh.Radii[i]);
+  }
+
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(static_cast<vtkIdType>(mesh.Faces.size()),
+    3 * static_cast<vtkIdType>(mesh.Faces.size()));
+  for (const auto& f : mesh.Faces)
+  {
+    const vtkIdType ids[3] = { f[0], f[1], f[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkCellArray> lines;
+  for (const auto& e : EdgesNotOnFaces(mesh))
+  {
+    const vtkIdType ids[2] = { e[0], e[1] };
+    lines->InsertNextCell(2, ids);
+  }
+  vtkNew<vtkCellArray> verts;
+  for (Index i : IsolatedVertices(mesh))
+  {
+    const vtkIdType id = i;
+    verts->InsertNextCell(1, &id);
+  }
+
+  output->Initialize();
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  output->SetLines(lines);
+  output->SetVerts(verts);
+  output->GetPointData()->SetScalars(radius);
+}
+
+std::string PolyDataToMedialMesh(vtkPolyData* input, MedialMesh& mesh)
+{
+  mesh = MedialMesh();
+  if (!input)
+  {
+    return "no medial mesh given";
+  }
+  const vtkIdType nv = input->GetNumberOfPoints();
+  vtkDataArray* radius = input->GetPointData()->GetArray(RadiusArrayName);
+  if (nv > 0 && !radius)
+  {
+    return "medial mesh has no point-data array named 'Radius'";
+  }
+  if (radius && radius->GetNumberOfComponents() != 1)
+  {
+    return "medial mesh 'Radius' array must have one component, not " +
+      std::to_string(radius->GetNumberOfComponents());
+  }
+  if (input->GetNumberOfStrips() > 0)
+  {
+    return "medial mesh has triangle strips; only triangles, lines and vertices are allowed";
+  }
+  mesh.Centers.resize(nv);
+  mesh.Radii.resize(nv);
+  for (vtkIdType i = 0; i < nv; ++i)
+  {
+    input->GetPoint(i, mesh.Centers[i].data());
+    mesh.Radii[i] = radius->GetComponent(i, 0);
+  }
+
+  std::size_t badPolys = 0, badLines = 0;
+  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    polys->GetCurrentCell(n, ids);
+    if (n != 3)
+    {
+      ++badPolys;
+      continue;
+    }
+    mesh.Faces.push_back({ ids[0], ids[1], ids[2] });
+  }
+  auto lines = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+  for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    lines->GetCurrentCell(n, ids);
+    if (n < 2)
+    {
+      ++badLines;
+      continue;
+    }
+    for (vtkIdType k = 0; k + 1 < n; ++k) // a polyline contributes all its segments
+    {
+      mesh.Edges.push_back({ ids[k], ids[k + 1] });
+    }
+  }
+  if (badPolys)
+  {
+    mesh = MedialMesh();
+    return "medial mesh has " + std::to_string(badPolys) +
+      " polygon(s) that are not triangles";
+  }
+  if (badLines)
+  {
+    mesh = MedialMesh();
+    return "medial mesh has " + std::to_string(badLines) + " line cell(s) with fewer than 2 points";
+  }
+  const MedialMeshCheck check = ValidateMedialMesh(mesh);
+  if (!check.IsValid())
+  {
+    mesh = MedialMesh();
+    return check.Message;
+  }
+  // An edge that is both a triangle edge and a separate line cell is a
+  // duplicate edge in the VTK form.
+  const std::size_t onFaces = mesh.Edges.size() - EdgesNotOnFaces(mesh).size();
+  if (onFaces)
+  {
+    mesh = MedialMesh();
+    return "medial mesh has " + std::to_string(onFaces) +
+      " line cell(s) duplicating an edge of a triangle";
+  }
+  return std::string();
+}
+}

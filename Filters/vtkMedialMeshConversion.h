@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Conversion between the plain medial mesh and its vtkPolyData form
+// (DESIGN.md data contract), and the one validation every medial-mesh
+// consumer calls. Private to the module: not wrapped.
+#ifndef vtkMedialMeshConversion_h
+#define vtkMedialMeshConversion_h
+
+#include "MedialMesh.h"
+
+#include <string>
+
+class vtkPolyData;
+
+namespace medialaxis
+{
+/// Name of the point-data array that holds sphere radii.
+constexpr const char* RadiusArrayName = "Radius";
+
+/// Fills `output` with points, a `Radius` point-data array (active scalars),
+/// triangles for faces, line cells for edges that bound no face and vertex
+/// cells for isolated vertices.
+void MedialMeshToPolyData(const MedialMesh& mesh, vtkPolyData* output);
+
+/// Reads a medial mesh from poly data and validates it. Returns an empty
+/// string on success, otherwise a message naming the defect (e.g. missing
+/// `Radius` array, a polygon that is not a triangle, duplicate triangles).
+std::string PolyDataToMedialMesh(vtkPolyData* input, MedialMesh& mesh);
+
+/// The shared validity check for medial meshes given as poly data.
+inline std::string ValidateMedialPolyData(vtkPolyData* input)
+{
+  MedialMesh unused;
+  return PolyDataToMedialMesh(input, unused);
+}
+}
+
+#endif

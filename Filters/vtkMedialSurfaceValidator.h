@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/**
+ * @class   vtkMedialSurfaceValidator
+ * @brief   Checks and repairs a surface so that the medial-axis filters can use it.
+ *
+ * The same preparation runs inside every MedialAxis filter that takes a
+ * surface; this filter exposes it on its own so that a user can see what
+ * would be repaired or why a mesh is refused.
+ *
+ * Repairs (each counted): points closer than RelativeMergeTolerance x the
+ * bounding-box diagonal are merged (so OBJ triangle soups become closed),
+ * polygons and strips are triangulated, triangles with a repeated vertex or
+ * zero area and duplicate triangles are dropped, inconsistently oriented
+ * triangles are flipped and shells facing inward are turned outward (a shell
+ * nested inside another is a cavity and faces inward).
+ *
+ * Refusals (output empty, ErrorMessage set, vtkErrorMacro): no triangles,
+ * NaN/Inf coordinates, open boundary edges, edges shared by more than two
+ * triangles, vertices where separate sheets touch, non-orientable surfaces
+ * and surfaces that enclose no volume. Several shells are allowed.
+ *
+ * The output's field data carries the counts (arrays named like the getters).
+ */
+#ifndef vtkMedialSurfaceValidator_h
+#define vtkMedialSurfaceValidator_h
+
+#include "vtkMedialAxisFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string>
+
+class VTKMEDIALAXISFILTERS_EXPORT vtkMedialSurfaceValidator : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkMedialSurfaceValidator* New();
+  vtkTypeMacro(vtkMedialSurfaceValidator, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Points closer than this fraction of the bounding-box diagonal are merged.
+  /// 0 merges only exactly coincident points. Default 1e-10.
+  vtkSetClampMacro(RelativeMergeTolerance, double, 0.0, 1e-3);
+  vtkGetMacro(RelativeMergeTolerance, double);
+  ///@}
+
+  ///@{
+  /// Flip inconsistent or inward-facing triangles (default on). When off,
+  /// such surfaces are refused instead.
+  vtkSetMacro(FixOrientation, bool);
+  vtkGetMacro(FixOrientation, bool);
+  vtkBooleanMacro(FixOrientation, bool);
+  ///@}
+
+  /// True when the last update produced a usable surface.
+  vtkGetMacro(Valid, bool);
+  /// Why the last update refused the surface ("" when valid).
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+  /// Repairs made by the last update, one per line.
+  const char* GetNotes() const { return this->Notes.c_str(); }
+
+  ///@{
+  /// Counts from the last update.
+  vtkGetMacro(NumberOfMergedPoints, vtkIdType);
+  vtkGetMacro(NumberOfDegenerateTriangles, vtkIdType);
+  vtkGetMacro(NumberOfDuplicateTriangles, vtkIdType);
+  vtkGetMacro(NumberOfBoundaryEdges, vtkIdType);
+  vtkGetMacro(NumberOfNonManifoldEdges, vtkIdType);
+  vtkGetMacro(NumberOfNonManifoldVertices, vtkIdType);
+  vtkGetMacro(NumberOfReorientedTriangles, vtkIdType);
+  vtkGetMacro(NumberOfInwardComponents, vtkIdType);
+  vtkGetMacro(NumberOfComponents, vtkIdType);
+  vtkGetMacro(Area, double);
+  vtkGetMacro(Volume, double);
+  ///@}
+
+protected:
+  vtkMedialSurfaceValidator();
+  ~vtkMedialSurfaceValidator() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double RelativeMergeTolerance = 1e-10;
+  bool FixOrientation = true;
+
+  bool Valid = false;
+  std::string ErrorMessage;
+  std::string Notes;
+  vtkIdType NumberOfMergedPoints = 0;
+  vtkIdType NumberOfDegenerateTriangles = 0;
+  vtkIdType NumberOfDuplicateTriangles = 0;
+  vtkIdType NumberOfBoundaryEdges = 0;
+  vtkIdType NumberOfNonManifoldEdges = 0;
+  vtkIdType NumberOfNonManifoldVertices = 0;
+  vtkIdType NumberOfReorientedTriangles = 0;
+  vtkIdType NumberOfInwardComponents = 0;
+  vtkIdType NumberOfComponents = 0;
+  double Area = 0.0;
+  double Volume = 0.0;
+
+private:
+  vtkMedialSurfaceValidator(const vtkMedialSurfaceValidator&) = delete;
+  void operator=(const vtkMedialSurfaceValidator&) = delete;
+};
+
+#endif

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The VTK side of surface preparation: every filter that consumes a surface
+// calls PrepareSurfacePolyData first and stops with the report's error.
+// Private to the module: not wrapped.
+#ifndef vtkSurfacePreparation_h
+#define vtkSurfacePreparation_h
+
+#include "SurfacePreparation.h"
+
+class vtkPolyData;
+
+namespace medialaxis
+{
+/// Triangulates polygons and strips of `input` (vertices and lines are
+/// ignored), then runs PrepareSurface. On success `output` holds the clean
+/// triangle surface (double-precision points); on failure it is left empty.
+SurfacePreparationReport PrepareSurfacePolyData(vtkPolyData* input, vtkPolyData* output,
+  const SurfacePreparationOptions& options = SurfacePreparationOptions());
+
+/// Converts a prepared triangle mesh to poly data (points and triangles).
+void TriangleMeshToPolyData(const TriangleMesh& mesh, vtkPolyData* output);
+}
+
+#endif

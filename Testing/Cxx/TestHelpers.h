@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Small hand-built meshes and helpers shared by the C++ tests.
+#ifndef medialaxis_TestHelpers_h
+#define medialaxis_TestHelpers_h
+
+#include "PolygonMesh.h"
+
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <fstream>
+#include <string>
+
+namespace medialaxis
+{
+namespace test
+{
+/// Unit cube [0,1]^3 as 12 outward triangles over 8 shared points.
+/// Records VTK error events (and keeps expected errors out of the log).
+class ErrorCatcher : public vtkCommand
+{
+public:
+  static ErrorCatcher* New() { return new ErrorCatcher; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    ++this->Count;
+    this->Last = data ? static_cast<const char*>(data) : "";
+  }
+  int Count = 0;
+  std::string Last;
+};
+
+inline TriangleMesh UnitCube(const Point3& offset = { 0, 0, 0 }, double scale = 1.0)
+{
+  TriangleMesh m;
+  for (int i = 0; i < 8; ++i)
+  {
+    m.Points.push_back({ offset[0] + scale * (i & 1), offset[1] + scale * ((i >> 1) & 1),
+      offset[2] + scale * ((i >> 2) & 1) });
+  }
+  // Each face as two outward triangles.
+  m.Triangles = { { 0, 2, 3 }, { 0, 3, 1 }, // z = 0 (normal -z)
+    { 4, 5, 7 }, { 4, 7, 6 },               // z = 1
+    { 0, 1, 5 }, { 0, 5, 4 },               // y = 0
+    { 2, 6, 7 }, { 2, 7, 3 },               // y = 1
+    { 0, 4, 6 }, { 0, 6, 2 },               // x = 0
+    { 1, 3, 7 }, { 1, 7, 5 } };             // x = 1
+  return m;
+}
+
+/// Regular tetrahedron-like closed mesh with apex `a` over a base.
+inline TriangleMesh Tetrahedron(const Point3& o, double s)
+{
+  TriangleMesh m;
+  m.Points = { { o[0], o[1], o[2] }, { o[0] + s, o[1], o[2] }, { o[0], o[1] + s, o[2] },
+    { o[0], o[1], o[2] + s } };
+  m.Triangles = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } };
+  return m;
+}
+
+/// Concatenates meshes without merging points.
+inline TriangleMesh Append(const TriangleMesh& a, const TriangleMesh& b)
+{
+  TriangleMesh m = a;
+  const Index base = static_cast<Index>(a.Points.size());
+  m.Points.insert(m.Points.end(), b.Points.begin(), b.Points.end());
+  for (Triangle t : b.Triangles)
+  {
+    m.Triangles.push_back({ t[0] + base, t[1] + base, t[2] + base });
+  }
+  return m;
+}
+
+inline vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const auto& p : mesh.Points)
+  {
+    points->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const auto& t : mesh.Triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  return pd;
+}
+
+/// Writes `text` to a fresh file in the working directory and returns its path.
+inline std::string WriteTextFile(const std::string& name, const std::string& text)
+{
+  std::ofstream file(name, std::ios::binary | std::ios::trunc);
+  file << text;
+  return name;
+}
+}
+}
+
+#endif

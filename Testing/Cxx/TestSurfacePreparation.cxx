@@ -1,0 +1,362 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Surface validation and preparation, one defect per small hand-built mesh.
+#include "AnalyticShapes.h"
+#include "SurfacePreparation.h"
+#include "TestHelpers.h"
+#include "vtkMedialSurfaceValidator.h"
+
+#include "vtkCellArray.h"
+#include "vtkPolyData.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace medialaxis;
+using test::Append;
+using test::Tetrahedron;
+using test::UnitCube;
+
+namespace
+{
+SurfacePreparationReport Prepare(const TriangleMesh& in, TriangleMesh& out, bool fix = true)
+{
+  SurfacePreparationOptions options;
+  options.FixOrientation = fix;
+  return PrepareSurface(in, out, options);
+}
+
+bool Contains(const std::string& text, const std::string& phrase)
+{
+  return text.find(phrase) != std::string::npos;
+}
+}
+
+TEST(SurfacePreparation, CleanCubePassesUnchanged)
+{
+  TriangleMesh out;
+  const auto r = Prepare(UnitCube(), out, false);
+  ASSERT_TRUE(r.Ok()) << r.Error;
+  EXPECT_EQ(out.Triangles.size(), 12u);
+  EXPECT_EQ(out.Points.size(), 8u);
+  EXPECT_NEAR(r.Volume, 1.0, 1e-12);
+  EXPECT_NEAR(r.Area, 6.0, 1e-12);
+  EXPECT_EQ(r.Components, 1u);
+  EXPECT_TRUE(r.Notes.empty());
+}
+
+TEST(SurfacePreparation, EmptyInput)
+{
+  TriangleMesh out;
+  EXPECT_TRUE(Contains(Prepare(TriangleMesh(), out).Error, "surface is empty"));
+}
+
+TEST(SurfacePreparation, NonFiniteCoordinates)
+{
+  TriangleMesh cube = UnitCube();
+  cube.Points[3][1] = std::nan("");
+  cube.Points[5][0] = INFINITY;
+  TriangleMesh out;
+  const auto r = Prepare(cube, out);
+  EXPECT_EQ(r.Error, "surface has 2 points with NaN or infinite coordinates");
+}
+
+TEST(SurfacePreparation, OpenBoundaryIsCounted)
+{
+  TriangleMesh cube = UnitCube();
+  cube.Triangles.pop_back(); // one missing triangle: 3 boundary edges
+  TriangleMesh out;
+  const auto r = Prepare(cube, out);
+  EXPECT_EQ(r.Error, "surface is not closed: 3 boundary edges");
+  EXPECT_EQ(r.BoundaryEdges, 3u);
+}
+
+TEST(SurfacePreparation, NonManifoldEdge)
+{
+  // Two tetrahedra glued along one edge (0-1 of both): that edge has 4 triangles.
+  TriangleMesh a = Tetrahedron({ 0, 0, 0 }, 1.0);
+  TriangleMesh b = a;
+  for (auto& p : b.Points)
+  {
+    p = { p[0], -p[1], -p[2] }; // rotate 180 degrees about x: shares edge 0-1
+  }
+  TriangleMesh both = Append(a, b);
+  TriangleMesh out;
+  const auto r = Prepare(both, out);
+  EXPECT_EQ(r.NonManifoldEdges, 1u);
+  EXPECT_EQ(r.Error, "surface is not manifold: 1 edge is shared by more than two triangles");
+}
+
+TEST(SurfacePreparation, ThreeTrianglesOnAnEdge)
+{
+  TriangleMesh cube = UnitCube();
+  cube.Points.push_back({ 0.5, 0.5, 0.5 });
+  cube.Triangles.push_back({ 0, 1, 8 }); // a fin on edge 0-1
+  TriangleMesh out;
+  const auto r = Prepare(cube, out);
+  EXPECT_TRUE(Contains(r.Error, "1 edge is shared by more than two triangles")) << r.Error;
+  EXPECT_TRUE(Contains(r.Error, "not closed: 2 boundary edges")) << r.Error;
+}
+
+TEST(SurfacePreparation, BowTieVertex)
+{
+  // Two tetrahedra touching at one vertex only.
+  TriangleMesh a = Tetrahedron({ 0, 0, 0 }, 1.0);
+  TriangleMesh b = a;
+  for (auto& p : b.Points)
+  {
+    p = { -p[0], -p[1], -p[2] };
+  }
+  TriangleMesh out;
+  const auto r = Prepare(Append(a, b), out);
+  EXPECT_EQ(r.NonManifoldVertices, 1u);
+  EXPECT_EQ(r.Error, "surface is not manifold: 1 vertex joins several separate sheets of triangles");
+}
+
+TEST(SurfacePreparation, InconsistentOrientationIsFixed)
+{
+  TriangleMesh cube = UnitCube();
+  std::swap(cube.Triangles[4][1], cube.Triangles[4][2]);
+  TriangleMesh out;
+  const auto r = Prepare(cube, out);
+  ASSERT_TRUE(r.Ok()) << r.Error;
+  EXPECT_EQ(r.ReorientedTriangles, 1u);
+  EXPECT_NEAR(SignedVolume(out), 1.0, 1e-12);
+  TriangleMesh again;
+  EXPECT_TRUE(Prepare(out, again, false).Ok()); // the result is consistent
+
+  const auto refused = Prepare(cube, out, false);
+  EXPECT_EQ(refused.Error, "surface orientation is inconsistent: 1 triangle disagrees with its neighbours");
+}
+
+TEST(SurfacePreparation, InwardOrientationIsFlipped)
+{
+  TriangleMesh cube = UnitCube();
+  for (auto& t : cube.Triangles)
+  {
+    std::swap(t[1], t[2]);
+  }
+  TriangleMesh out;
+  const auto r = Prepare(cube, out);
+  ASSERT_TRUE(r.Ok()) << r.Error;
+  EXPECT_EQ(r.InwardComponents, 1u);
+  EXPECT_EQ(r.ReorientedTriangles, 0u);
+  EXPECT_NEAR(r.Volume, 1.0, 1e-12);
+  EXPECT_TRUE(Contains(Prepare(cube, out, false).Error, "oriented inward"));
+}
+
+TEST(SurfacePreparation, TriangleSoupBecomesClosed)
+{
+  // Every triangle with its own three points, as OBJ files with per-corner
+  // normals load; one copy slightly perturbed below the merge tolerance.
+  const TriangleMesh cube = UnitCube({ 10, 10, 10 }, 2.0);
+  TriangleMesh soup;
+  for (const auto& t : cube.Triangles)
+  {
+    const Index base = static_cast<Index>(soup.Points.size());
+    for (Index v : t)
+    {
+      soup.Points.push_back(cube.Points[v]);
+    }
+    soup.Triangles.push_back({ base, base + 1, base + 2 });
+  }
+  soup.Points[0][0] += 1e-13;
+  TriangleMesh out;
+  const auto r = Prepare(soup, out);
+  ASSERT_TRUE(r.Ok()) << r.Error;
+  EXPECT_EQ(out.Points.size(), 8u);
+  EXPECT_EQ(r.MergedPoints, 36u - 8u);
+  EXPECT_NEAR(r.Volume, 8.0, 1e-9);
+
+  SurfacePreparationOptions exact;
+  exact.RelativeMergeTolerance = 0.0; // the perturbed copy then stays apart
+  EXPECT_TRUE(Contains(PrepareSurface(soup, out, exact).Error, "not closed"));
+}
+
+TEST(SurfacePreparation, DegenerateAndDuplicateTrianglesAreDropped)
+{
+  TriangleMesh cube = UnitCube();
+  cube.Triangles.push_back({ 0, 0, 1 });     // repeated vertex
+  cube.Triangles.push_back(cube.Triangles[0]); // exact duplicate
+  cube.Triangles.push_back({ 3, 0, 2 });     // same triangle, rotated
+  TriangleMesh out;
+  const auto r = Prepare(cube, out);
+  ASSERT_TRUE(r.Ok()) << r.Error;
+  EXPECT_EQ(r.DegenerateTriangles, 1u);
+  EXPECT_EQ(r.DuplicateTriangles, 2u);
+  EXPECT_EQ(out.Triangles.size(), 12u);
+}
+
+TEST(SurfacePreparation, ZeroAreaNeedleIsAbsorbed)
+{
+  // Split the cube's bottom edge 0-1 at its midpoint 8 on the y = 0 side
+  // only: the bottom face keeps the long edge, so a needle (0, 8, 1)-shaped
+  // gap must be closed by a zero-area triangle, which preparation removes by
+  // splitting the bottom triangle instead.
+  TriangleMesh cube = UnitCube();
+  cube.Points.push_back({ 0.5, 0.0, 0.0 });
+  // y = 0 face was {0,1,5},{0,5,4}: use point 8 on edge 0-1.
+  cube.Triangles[4] = { 0, 8, 5 };
+  cube.Triangles.push_back({ 8, 1, 5 });
+  cube.Triangles.push_back({ 0, 1, 8 }); // the zero-area needle
+  TriangleMesh out;
+  const auto r = Prepare(cube, out);
+  ASSERT_TRUE(r.Ok()) << r.Error;
+  EXPECT_EQ(r.DegenerateTriangles, 1u);
+  EXPECT_EQ(r.SplitNeighbours, 1u);
+  EXPECT_EQ(out.Triangles.size(), 14u);
+  EXPECT_NEAR(r.Volume, 1.0, 1e-12);
+  EXPECT_NEAR(r.Area, 6.0, 1e-12);
+}
+
+TEST(SurfacePreparation, SeveralComponentsAreAllowed)
+{
+  TriangleMesh out;
+  const auto r = Prepare(Append(UnitCube(), UnitCube({ 3, 0, 0 })), out);
+  ASSERT_TRUE(r.Ok()) << r.Error;
+  EXPECT_EQ(r.Components, 2u);
+  EXPECT_NEAR(r.Volume, 2.0, 1e-12);
+}
+
+TEST(SurfacePreparation, NestedShellBecomesACavity)
+{
+  // A sphere inside a sphere, both outward as given: the inner one bounds a
+  // cavity and must face inward; the enclosed volume is the shell's.
+  const TriangleMesh outer = MakeSphere(2.0, 8);
+  const TriangleMesh inner = MakeSphere(1.0, 8);
+  TriangleMesh out;
+  const auto r = Prepare(Append(outer, inner), out);
+  ASSERT_TRUE(r.Ok()) << r.Error;
+  EXPECT_EQ(r.Components, 2u);
+  EXPECT_EQ(r.InwardComponents, 1u);
+  EXPECT_NEAR(r.Volume, SignedVolume(outer) - SignedVolume(inner), 1e-9);
+}
+
+TEST(SurfacePreparation, NonOrientableSurfaceIsRefused)
+{
+  // A combinatorial Klein bottle: an n x m torus grid whose last column is
+  // glued to the first with the rows reversed.
+  const int n = 6, m = 6;
+  TriangleMesh k;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      k.Points.push_back({ double(i), double(j), double((i * 7 + j * 3) % 5) });
+    }
+  }
+  auto id = [&](int i, int j) {
+    if (i == n)
+    {
+      i = 0;
+      j = (m - j) % m;
+    }
+    return static_cast<Index>(i * m + (j % m));
+  };
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      k.Triangles.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1) });
+      k.Triangles.push_back({ id(i, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  }
+  TriangleMesh out;
+  const auto r = Prepare(k, out);
+  EXPECT_TRUE(Contains(r.Error, "not orientable")) << r.Error;
+}
+
+TEST(SurfacePreparation, DoublyCoveredSheetIsRefused)
+{
+  TriangleMesh sheet;
+  sheet.Points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+  sheet.Triangles = { { 0, 1, 2 } };
+  sheet.Points.push_back({ 0.3, 0.3, 0 });
+  sheet.Triangles = { { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 }, { 0, 3, 1 }, { 1, 3, 2 },
+    { 2, 3, 0 } };
+  TriangleMesh out;
+  const auto r = Prepare(sheet, out);
+  // The back side repeats the front's triangles: dropping the duplicates
+  // leaves an open sheet.
+  EXPECT_EQ(r.DuplicateTriangles, 3u);
+  EXPECT_EQ(r.Error, "surface is not closed: 3 boundary edges");
+}
+
+TEST(SurfacePreparation, FarFromOriginAndTinyScale)
+{
+  for (double scale : { 1e-30, 1e30 })
+  {
+    TriangleMesh out;
+    const auto r = Prepare(UnitCube({ 0, 0, 0 }, scale), out);
+    ASSERT_TRUE(r.Ok()) << scale << ": " << r.Error;
+    EXPECT_NEAR(r.Volume / (scale * scale * scale), 1.0, 1e-9);
+  }
+  TriangleMesh out;
+  const auto r = Prepare(UnitCube({ 1e6, -1e6, 1e6 }, 1.0), out);
+  ASSERT_TRUE(r.Ok()) << r.Error;
+  EXPECT_NEAR(r.Volume, 1.0, 1e-6);
+}
+
+// The VTK filter: polygons are triangulated, points/lines refused, counts reported.
+TEST(MedialSurfaceValidator, TriangulatesPolygonsAndReports)
+{
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < 8; ++i)
+  {
+    points->InsertNextPoint(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  }
+  vtkNew<vtkCellArray> quads;
+  const vtkIdType faces[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  for (const auto& f : faces)
+  {
+    quads->InsertNextCell(4, f);
+  }
+  vtkNew<vtkPolyData> cube;
+  cube->SetPoints(points);
+  cube->SetPolys(quads);
+  vtkNew<vtkMedialSurfaceValidator> validator;
+  validator->SetInputData(cube);
+  validator->Update();
+  EXPECT_TRUE(validator->GetValid()) << validator->GetErrorMessage();
+  EXPECT_EQ(validator->GetOutput()->GetNumberOfPolys(), 12);
+  EXPECT_NEAR(validator->GetVolume(), 1.0, 1e-12);
+  EXPECT_EQ(validator->GetNumberOfComponents(), 1);
+}
+
+TEST(MedialSurfaceValidator, RefusesLinesOnlyWithAClearMessage)
+{
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType line[2] = { 0, 1 };
+  lines->InsertNextCell(2, line);
+  vtkNew<vtkPolyData> pd;
+  pd->SetPoints(points);
+  pd->SetLines(lines);
+  vtkNew<vtkMedialSurfaceValidator> validator;
+  vtkNew<test::ErrorCatcher> errors;
+  validator->AddObserver(vtkCommand::ErrorEvent, errors);
+  validator->SetInputData(pd);
+  validator->Update();
+  EXPECT_FALSE(validator->GetValid());
+  EXPECT_EQ(std::string(validator->GetErrorMessage()),
+    "surface has no polygons (it has 1 line and 0 vertex cells): a closed triangle mesh is needed");
+  EXPECT_EQ(validator->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(errors->Count, 1);
+}
+
+TEST(MedialSurfaceValidator, OpenMeshIsRefused)
+{
+  TriangleMesh cube = UnitCube();
+  cube.Triangles.resize(10);
+  vtkNew<vtkMedialSurfaceValidator> validator;
+  vtkNew<test::ErrorCatcher> errors;
+  validator->AddObserver(vtkCommand::ErrorEvent, errors);
+  validator->SetInputData(test::ToPolyData(cube));
+  validator->Update();
+  EXPECT_FALSE(validator->GetValid());
+  EXPECT_EQ(validator->GetNumberOfBoundaryEdges(), 4);
+  EXPECT_EQ(std::string(validator->GetErrorMessage()), "surface is not closed: 4 boundary edges");
+}

@@ -1,0 +1,129 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The Python package used the way users use it: in VTK pipelines."""
+import os
+import tempfile
+import unittest
+
+import vtk
+import medialaxis
+
+
+class ErrorObserver:
+    """Collects VTK error events instead of printing them."""
+
+    def __init__(self):
+        self.messages = []
+
+    def __call__(self, obj, event, data=None):
+        self.messages.append(event)
+
+    def attach(self, algorithm):
+        algorithm.AddObserver("ErrorEvent", self)
+        return self
+
+
+class PipelineTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def path(self, name):
+        return os.path.join(self.tmp.name, name)
+
+    def test_shape_validator_and_xml_writer_chain(self):
+        shape = medialaxis.vtkAnalyticShapeSource()
+        shape.SetShapeToRoundedBox()
+        shape.SetFilletRadius(0.25)
+        validator = medialaxis.vtkMedialSurfaceValidator()
+        validator.SetInputConnection(shape.GetOutputPort())
+        normals = vtk.vtkPolyDataNormals()  # any VTK filter chains after ours
+        normals.SetInputConnection(validator.GetOutputPort())
+        writer = vtk.vtkXMLPolyDataWriter()
+        writer.SetInputConnection(normals.GetOutputPort())
+        writer.SetFileName(self.path("box.vtp"))
+        self.assertEqual(writer.Write(), 1)
+        self.assertTrue(validator.GetValid(), validator.GetErrorMessage())
+        self.assertAlmostEqual(validator.GetVolume() / shape.GetExactVolume(), 1.0, delta=0.01)
+
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(self.path("box.vtp"))
+        reader.Update()
+        self.assertEqual(reader.GetOutput().GetNumberOfCells(),
+                         validator.GetOutput().GetNumberOfCells())
+        area = reader.GetOutput().GetFieldData().GetArray("Area").GetValue(0)
+        self.assertAlmostEqual(area, validator.GetArea())
+
+    def test_medial_axis_round_trip(self):
+        text = "4 5 1\n" \
+               "v 0 0 0 0.5\nv 1 0 0 0.25\nv 0 1 0 0.125\nv 0.1 0.2 3.3 0.1\n" \
+               "e 0 1\ne 1 2\ne 2 0\ne 2 3\ne 0 3\n" \
+               "f 0 1 2\n"
+        with open(self.path("in.ma"), "w") as f:
+            f.write(text)
+        reader = medialaxis.vtkMedialAxisReader()
+        reader.SetFileName(self.path("in.ma"))
+        reader.Update()
+        mat = reader.GetOutput()
+        self.assertEqual(mat.GetNumberOfPoints(), 4)
+        self.assertEqual(mat.GetNumberOfPolys(), 1)
+        self.assertEqual(mat.GetNumberOfLines(), 2)  # 2-3 and 0-3 bound no face
+        self.assertEqual(mat.GetPointData().GetScalars().GetName(), "Radius")
+        self.assertEqual(mat.GetPointData().GetArray("Radius").GetValue(3), 0.1)
+
+        writer = medialaxis.vtkMedialAxisWriter()
+        writer.SetInputConnection(reader.GetOutputPort())
+        writer.SetFileName(self.path("out.ma"))
+        self.assertEqual(writer.Write(), 1)
+        with open(self.path("out.ma")) as f:
+            lines = f.read().split("\n")
+        self.assertEqual(lines[0], "4 5 1")
+        self.assertIn("v 0.10000000000000001 0.20000000000000001 3.2999999999999998 "
+                      "0.10000000000000001", lines)
+
+    def test_malformed_medial_axis_file(self):
+        with open(self.path("bad.ma"), "w") as f:
+            f.write("2 0 0\nv 0 0 0 1\nv 1 0 0 -2\n")
+        reader = medialaxis.vtkMedialAxisReader()
+        errors = ErrorObserver().attach(reader)
+        reader.SetFileName(self.path("bad.ma"))
+        reader.Update()
+        self.assertEqual(reader.GetOutput().GetNumberOfPoints(), 0)
+        self.assertIn("line 3: radius -2 is negative", reader.GetErrorMessage())
+        self.assertTrue(errors.messages)
+
+    def test_off_reader_and_surface_reader(self):
+        with open(self.path("tet.off"), "w") as f:
+            f.write("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                    "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+        reader = medialaxis.vtkSurfaceFileReader()
+        reader.SetFileName(self.path("tet.off"))
+        validator = medialaxis.vtkMedialSurfaceValidator()
+        validator.SetInputConnection(reader.GetOutputPort())
+        validator.Update()
+        self.assertTrue(validator.GetValid(), validator.GetErrorMessage())
+        self.assertAlmostEqual(validator.GetVolume(), 1.0 / 6.0)
+
+    def test_open_surface_is_refused(self):
+        sphere = vtk.vtkSphereSource()
+        clip = vtk.vtkClipPolyData()  # cut a hole: the surface is open
+        plane = vtk.vtkPlane()
+        plane.SetNormal(0, 0, 1)
+        plane.SetOrigin(0, 0, 0.4)
+        clip.SetClipFunction(plane)
+        clip.InsideOutOn()
+        clip.SetInputConnection(sphere.GetOutputPort())
+        validator = medialaxis.vtkMedialSurfaceValidator()
+        errors = ErrorObserver().attach(validator)
+        validator.SetInputConnection(clip.GetOutputPort())
+        validator.Update()
+        self.assertFalse(validator.GetValid())
+        self.assertTrue(validator.GetErrorMessage().startswith("surface is not closed: "))
+        self.assertGreater(validator.GetNumberOfBoundaryEdges(), 0)
+        self.assertEqual(validator.GetOutput().GetNumberOfPoints(), 0)
+        self.assertTrue(errors.messages)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,60 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""pvbatch: load the MedialAxis plugin, read a .ma file, run its filters."""
+import os
+import sys
+import tempfile
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview import servermanager
+
+plugin, data_dir = sys.argv[1], sys.argv[2]
+LoadPlugin(plugin, remote=False, ns=globals())
+
+
+def check(condition, message):
+    if not condition:
+        raise AssertionError(message)
+
+
+# The reader is registered for *.ma: OpenDataFile picks it by extension.
+ma_path = os.path.join(data_dir, "slab_and_cone.ma")
+reader = OpenDataFile(ma_path)
+check(reader is not None, "no reader registered for .ma")
+check(reader.GetXMLName() == "MedialAxisReader", "wrong reader: " + reader.GetXMLName())
+reader.UpdatePipeline()
+mat = servermanager.Fetch(reader)
+check(mat.GetNumberOfPoints() == 5, "expected 5 spheres, got %d" % mat.GetNumberOfPoints())
+check(mat.GetNumberOfPolys() == 1, "expected 1 slab")
+check(mat.GetNumberOfLines() == 1, "expected 1 cone")
+check(mat.GetNumberOfVerts() == 1, "expected 1 isolated sphere")
+radius = mat.GetPointData().GetArray("Radius")
+check(radius is not None and radius.GetRange() == (0.2, 1.0), "Radius array wrong")
+check(reader.PointData["Radius"].GetRange() == (0.2, 1.0), "Radius not exposed to ParaView")
+
+# The writer is registered for *.ma too: write, read back, compare.
+with tempfile.TemporaryDirectory() as tmp:
+    out = os.path.join(tmp, "copy.ma")
+    SaveData(out, proxy=reader)
+    again = servermanager.Fetch(MedialAxisReader(FileName=out))
+    check(again.GetNumberOfPoints() == 5 and again.GetNumberOfPolys() == 1,
+          "write-then-read changed the mesh")
+
+    off = os.path.join(tmp, "tet.off")
+    with open(off, "w") as f:
+        f.write("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+    tet = OpenDataFile(off)
+    check(tet.GetXMLName() == "OFFReader", "wrong reader for .off: " + tet.GetXMLName())
+    check(servermanager.Fetch(tet).GetNumberOfPolys() == 4, "OFF reader lost faces")
+
+# Source and filter from the plugin, as a user would chain them.
+shape = MedialTestShape(Shape="Rounded Box", FilletRadius=0.3, Resolution=8)
+validated = ValidateSurface(Input=shape)
+validated.UpdatePipeline()
+surface = servermanager.Fetch(validated)
+check(surface.GetNumberOfPolys() > 0, "validated surface is empty")
+volume = surface.GetFieldData().GetArray("Volume").GetValue(0)
+# Minkowski sum of a 1.4-cube with a 0.3-ball: V = a^3 + 6 r a^2 + 3 pi r^2 a + 4/3 pi r^3.
+a, r, pi = 1.4, 0.3, 3.141592653589793
+exact = a ** 3 + 6 * r * a ** 2 + 3 * pi * r ** 2 * a + 4.0 / 3.0 * pi * r ** 3
+check(abs(volume / exact - 1) < 0.01, "rounded box volume %g, exact %g" % (volume, exact))
+print("pvbatch plugin test passed")

@@ -35,8 +35,21 @@ void TriangleMeshToPolyData(const TriangleMesh& mesh, vtkPolyData* output)
 SurfacePreparationReport PrepareSurfacePolyData(
   vtkPolyData* input, vtkPolyData* output, const SurfacePreparationOptions& options)
 {
-  SurfacePreparationReport report;
   output->Initialize();
+  TriangleMesh prepared;
+  const SurfacePreparationReport report = PrepareSurfaceMesh(input, prepared, options);
+  if (report.Ok())
+  {
+    TriangleMeshToPolyData(prepared, output);
+  }
+  return report;
+}
+
+SurfacePreparationReport PrepareSurfaceMesh(
+  vtkPolyData* input, TriangleMesh& prepared, const SurfacePreparationOptions& options)
+{
+  SurfacePreparationReport report;
+  prepared = TriangleMesh();
   if (!input || input->GetNumberOfPoints() == 0)
   {
     report.Error = "surface is empty: it has no points";
@@ -87,16 +100,11 @@ SurfacePreparationReport PrepareSurfacePolyData(
     }
   }
 
-  TriangleMesh prepared;
   report = PrepareSurface(soup, prepared, options);
   if (notTriangles)
   {
     report.Notes.push_back(std::to_string(notTriangles) +
       " polygon(s) could not be triangulated and were dropped");
-  }
-  if (report.Ok())
-  {
-    TriangleMeshToPolyData(prepared, output);
   }
   return report;
 }

@@ -17,6 +17,10 @@ namespace medialaxis
 SurfacePreparationReport PrepareSurfacePolyData(vtkPolyData* input, vtkPolyData* output,
   const SurfacePreparationOptions& options = SurfacePreparationOptions());
 
+/// The same, giving the prepared surface as a plain triangle mesh.
+SurfacePreparationReport PrepareSurfaceMesh(vtkPolyData* input, TriangleMesh& prepared,
+  const SurfacePreparationOptions& options = SurfacePreparationOptions());
+
 /// Converts a prepared triangle mesh to poly data (points and triangles).
 void TriangleMeshToPolyData(const TriangleMesh& mesh, vtkPolyData* output);
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "AnalyticShapes.h"
 
+#include "Vec3.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -10,12 +12,6 @@ namespace medialaxis
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
-
-double Distance2(const Point3& a, const Point3& b)
-{
-  const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
-  return dx * dx + dy * dy + dz * dz;
-}
 
 // Splits quad (a, b, c, d), given counter-clockwise seen from outside, along
 // its shorter diagonal.

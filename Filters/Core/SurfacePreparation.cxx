@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "SurfacePreparation.h"
 
+#include "DisjointSets.h"
+#include "TriangleAdjacency.h"
+#include "Vec3.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -11,23 +15,6 @@ namespace medialaxis
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
-
-Point3 Sub(const Point3& a, const Point3& b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-Point3 Cross(const Point3& a, const Point3& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-double Dot(const Point3& a, const Point3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-double Norm(const Point3& a)
-{
-  return std::sqrt(Dot(a, a));
-}
 
 std::string Count(std::size_t n, const char* singular, const char* plural)
 {
@@ -86,7 +73,7 @@ std::vector<Index> MergeCoincidentPoints(
             }
             for (Index j : it->second)
             {
-              const Point3 d = Sub(points[j], p);
+              const Point3 d = (points[j] - p);
               if (Dot(d, d) <= tol2 && (found < 0 || j < found))
               {
                 found = j;
@@ -132,62 +119,6 @@ std::vector<Index> MergeCoincidentPoints(
   return representative;
 }
 
-// Union-find with path halving.
-struct DisjointSets
-{
-  std::vector<Index> Parent;
-  explicit DisjointSets(std::size_t n)
-    : Parent(n)
-  {
-    std::iota(this->Parent.begin(), this->Parent.end(), Index(0));
-  }
-  Index Find(Index x)
-  {
-    while (this->Parent[x] != x)
-    {
-      this->Parent[x] = this->Parent[this->Parent[x]];
-      x = this->Parent[x];
-    }
-    return x;
-  }
-  void Union(Index a, Index b)
-  {
-    a = this->Find(a);
-    b = this->Find(b);
-    if (a != b)
-    {
-      this->Parent[std::max(a, b)] = std::min(a, b); // deterministic roots
-    }
-  }
-};
-
-// One directed use of an undirected edge by a triangle.
-struct HalfEdge
-{
-  Index Lo, Hi; // sorted vertex ids
-  Index Tri;
-  bool Forward; // triangle traverses Lo -> Hi
-  bool operator<(const HalfEdge& o) const
-  {
-    return Lo != o.Lo ? Lo < o.Lo : (Hi != o.Hi ? Hi < o.Hi : Tri < o.Tri);
-  }
-};
-
-std::vector<HalfEdge> SortedHalfEdges(const std::vector<Triangle>& triangles)
-{
-  std::vector<HalfEdge> halfEdges;
-  halfEdges.reserve(3 * triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index a = triangles[t][k], b = triangles[t][(k + 1) % 3];
-      halfEdges.push_back({ std::min(a, b), std::max(a, b), static_cast<Index>(t), a < b });
-    }
-  }
-  std::sort(halfEdges.begin(), halfEdges.end());
-  return halfEdges;
-}
 
 // Replaces zero-area "needle" triangles (three distinct but collinear
 // vertices, common in CAD exports) by splitting the neighbour across their
@@ -200,9 +131,9 @@ std::size_t RemoveNeedles(const std::vector<Point3>& points, std::vector<Triangl
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     const Triangle& tri = triangles[t];
-    const Point3 e0 = Sub(points[tri[1]], points[tri[0]]);
-    const Point3 e1 = Sub(points[tri[2]], points[tri[0]]);
-    const Point3 e2 = Sub(points[tri[2]], points[tri[1]]);
+    const Point3 e0 = (points[tri[1]] - points[tri[0]]);
+    const Point3 e1 = (points[tri[2]] - points[tri[0]]);
+    const Point3 e2 = (points[tri[2]] - points[tri[1]]);
     const double longest = std::max({ Dot(e0, e0), Dot(e1, e1), Dot(e2, e2) });
     if (Norm(Cross(e0, e1)) <= 1e-12 * longest)
     {
@@ -229,7 +160,7 @@ std::size_t RemoveNeedles(const std::vector<Point3>& points, std::vector<Triangl
     double longestLength = -1.0;
     for (int k = 0; k < 3; ++k)
     {
-      const Point3 e = Sub(points[tri[(k + 1) % 3]], points[tri[k]]);
+      const Point3 e = (points[tri[(k + 1) % 3]] - points[tri[k]]);
       if (Dot(e, e) > longestLength)
       {
         longestLength = Dot(e, e);
@@ -300,9 +231,9 @@ double WindingNumber(const Point3& p, const std::vector<Point3>& points,
   double total = 0.0;
   for (Index t : subset)
   {
-    const Point3 a = Sub(points[triangles[t][0]], p);
-    const Point3 b = Sub(points[triangles[t][1]], p);
-    const Point3 c = Sub(points[triangles[t][2]], p);
+    const Point3 a = (points[triangles[t][0]] - p);
+    const Point3 b = (points[triangles[t][1]] - p);
+    const Point3 c = (points[triangles[t][2]] - p);
     const double la = Norm(a), lb = Norm(b), lc = Norm(c);
     const double numerator = Dot(a, Cross(b, c));
     const double denominator = la * lb * lc + Dot(a, b) * lc + Dot(b, c) * la + Dot(c, a) * lb;
@@ -323,9 +254,9 @@ double SignedVolumeOf(
   double sixVolume = 0.0;
   for (Index t : subset)
   {
-    const Point3 a = Sub(points[triangles[t][0]], origin);
-    const Point3 b = Sub(points[triangles[t][1]], origin);
-    const Point3 c = Sub(points[triangles[t][2]], origin);
+    const Point3 a = (points[triangles[t][0]] - origin);
+    const Point3 b = (points[triangles[t][1]] - origin);
+    const Point3 c = (points[triangles[t][2]] - origin);
     sixVolume += Dot(a, Cross(b, c));
   }
   return sixVolume / 6.0;
@@ -344,8 +275,8 @@ double SurfaceArea(const TriangleMesh& mesh)
   double twiceArea = 0.0;
   for (const Triangle& t : mesh.Triangles)
   {
-    twiceArea += Norm(Cross(Sub(mesh.Points[t[1]], mesh.Points[t[0]]),
-      Sub(mesh.Points[t[2]], mesh.Points[t[0]])));
+    twiceArea += Norm(Cross((mesh.Points[t[1]] - mesh.Points[t[0]]),
+      (mesh.Points[t[2]] - mesh.Points[t[0]])));
   }
   return 0.5 * twiceArea;
 }
@@ -405,7 +336,7 @@ SurfacePreparationReport PrepareSurface(
       Count(report.NonFinitePoints, "point", "points") + " with NaN or infinite coordinates";
     return report;
   }
-  const double diagonal = Norm(Sub(hi, lo));
+  const double diagonal = Norm((hi - lo));
   double extent = 0.0;
   for (int k = 0; k < 3; ++k)
   {

@@ -2,6 +2,7 @@
 // Every real mesh of the shared test set (see its SOURCES.md for origin and
 // terms) reads and prepares into a closed, manifold, outward surface whose
 // genus matches the one SOURCES.md gives. Skipped when the set is absent.
+#include "TestHelpers.h"
 #include "vtkMedialSurfaceValidator.h"
 #include "vtkSurfaceFileReader.h"
 
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <set>
@@ -122,7 +124,10 @@ INSTANTIATE_TEST_SUITE_P(All, SharedMesh,
 
 TEST(SurfaceFileReader, UnknownExtensionAndMissingFile)
 {
+  std::remove("mesh.xyz"); // left by an earlier run
   vtkNew<vtkSurfaceFileReader> reader;
+  vtkNew<medialaxis::test::ErrorCatcher> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
   reader->SetFileName("mesh.xyz");
   reader->Update();
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Small vector helpers on Point3 for the geometry code.
+#ifndef medialaxis_Vec3_h
+#define medialaxis_Vec3_h
+
+#include "MedialMesh.h" // Point3
+
+#include <cmath>
+
+namespace medialaxis
+{
+inline Point3 operator+(const Point3& a, const Point3& b)
+{
+  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
+}
+inline Point3 operator-(const Point3& a, const Point3& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+inline Point3 operator*(double s, const Point3& a)
+{
+  return { s * a[0], s * a[1], s * a[2] };
+}
+inline double Dot(const Point3& a, const Point3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline Point3 Cross(const Point3& a, const Point3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+inline double Norm(const Point3& a)
+{
+  return std::sqrt(Dot(a, a));
+}
+inline double Distance2(const Point3& a, const Point3& b)
+{
+  const Point3 d = a - b;
+  return Dot(d, d);
+}
+/// Unit vector, or zero for a zero vector.
+inline Point3 Normalized(const Point3& a)
+{
+  const double n = Norm(a);
+  return n > 0.0 ? (1.0 / n) * a : Point3{ 0.0, 0.0, 0.0 };
+}
+}
+
+#endif

@@ -35,6 +35,8 @@ medialaxis::AreaVolume Exact(vtkAnalyticShapeSource* s)
     case vtkAnalyticShapeSource::ROUNDED_BOX:
       return medialaxis::RoundedBoxAreaVolume(
         { s->GetXLength(), s->GetYLength(), s->GetZLength() }, s->GetFilletRadius());
+    case vtkAnalyticShapeSource::L_BLOCK:
+      return medialaxis::LBlockAreaVolume({ s->GetXLength(), s->GetYLength(), s->GetZLength() });
     default:
       return medialaxis::CylinderAreaVolume(s->GetRadius(), s->GetLength());
   }
@@ -76,6 +78,9 @@ int vtkAnalyticShapeSource::RequestData(
       case ROUNDED_BOX:
         mesh = medialaxis::MakeRoundedBox(
           { this->XLength, this->YLength, this->ZLength }, this->FilletRadius, this->Resolution);
+        break;
+      case L_BLOCK:
+        mesh = medialaxis::MakeLBlock({ this->XLength, this->YLength, this->ZLength }, this->Resolution);
         break;
       default:
         mesh = medialaxis::MakeCylinder(this->Radius, this->Length, this->Resolution);

@@ -17,6 +17,9 @@
  *   FilletRadius; the fillet centre lines lie at FilletRadius from both
  *   adjacent faces.
  * - Cylinder (Radius, Length = height, along z).
+ * - LBlock (XLength, YLength, ZLength): the box minus its quadrant x > 0,
+ *   y > 0, so that the vertical edge on the z axis is a sharp concave edge;
+ *   Resolution grid cells per half side.
  *
  * Resolution is the number of segments along a quarter circle (for the sharp
  * box, along its longest side). GetExactArea() / GetExactVolume() give the
@@ -42,12 +45,13 @@ public:
     TORUS = 2,
     BOX = 3,
     ROUNDED_BOX = 4,
-    CYLINDER = 5
+    CYLINDER = 5,
+    L_BLOCK = 6
   };
 
   ///@{
   /// Which shape to generate (default SPHERE).
-  vtkSetClampMacro(Shape, int, SPHERE, CYLINDER);
+  vtkSetClampMacro(Shape, int, SPHERE, L_BLOCK);
   vtkGetMacro(Shape, int);
   void SetShapeToSphere() { this->SetShape(SPHERE); }
   void SetShapeToCapsule() { this->SetShape(CAPSULE); }
@@ -55,6 +59,7 @@ public:
   void SetShapeToBox() { this->SetShape(BOX); }
   void SetShapeToRoundedBox() { this->SetShape(ROUNDED_BOX); }
   void SetShapeToCylinder() { this->SetShape(CYLINDER); }
+  void SetShapeToLBlock() { this->SetShape(L_BLOCK); }
   ///@}
 
   ///@{
@@ -78,7 +83,7 @@ public:
   ///@}
 
   ///@{
-  /// Full side lengths of the box and rounded box (default 2 x 2 x 2).
+  /// Full side lengths of the box, rounded box and L-block (default 2 x 2 x 2).
   vtkSetClampMacro(XLength, double, 1e-12, VTK_DOUBLE_MAX);
   vtkGetMacro(XLength, double);
   vtkSetClampMacro(YLength, double, 1e-12, VTK_DOUBLE_MAX);

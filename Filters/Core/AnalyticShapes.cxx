@@ -304,6 +304,93 @@ TriangleMesh MakeCylinder(double radius, double height, int resolution)
   return mesh;
 }
 
+TriangleMesh MakeLBlock(const Point3& sides, int resolution)
+{
+  for (double s : sides)
+  {
+    RequirePositive(s, "L-block side");
+  }
+  // The surface of a set of grid cells: every cell face between an inside
+  // and an outside cell, as two triangles, over shared grid nodes.
+  const int n = std::max(resolution, 1);
+  const int cells[3] = { 2 * n, 2 * n, 2 * n };
+  auto inside = [&](int i, int j, int k) {
+    if (i < 0 || j < 0 || k < 0 || i >= cells[0] || j >= cells[1] || k >= cells[2])
+    {
+      return false;
+    }
+    return !(i >= n && j >= n);
+  };
+  TriangleMesh mesh;
+  std::vector<Index> nodeId(static_cast<std::size_t>(2 * n + 1) * (2 * n + 1) * (2 * n + 1), -1);
+  auto node = [&](int i, int j, int k) {
+    Index& id = nodeId[(static_cast<std::size_t>(i) * (2 * n + 1) + j) * (2 * n + 1) + k];
+    if (id < 0)
+    {
+      id = static_cast<Index>(mesh.Points.size());
+      mesh.Points.push_back({ sides[0] * (double(i) / cells[0] - 0.5),
+        sides[1] * (double(j) / cells[1] - 0.5), sides[2] * (double(k) / cells[2] - 0.5) });
+    }
+    return id;
+  };
+  for (int i = 0; i < cells[0]; ++i)
+  {
+    for (int j = 0; j < cells[1]; ++j)
+    {
+      for (int k = 0; k < cells[2]; ++k)
+      {
+        if (!inside(i, j, k))
+        {
+          continue;
+        }
+        const int c[3] = { i, j, k };
+        for (int a = 0; a < 3; ++a)
+        {
+          const int b = (a + 1) % 3, d = (a + 2) % 3;
+          for (int side = 0; side < 2; ++side)
+          {
+            int o[3] = { i, j, k };
+            o[a] += side ? 1 : -1;
+            if (inside(o[0], o[1], o[2]))
+            {
+              continue;
+            }
+            // Face corners in the (b, d) plane at a = c[a] + side.
+            Index ids[4];
+            const int du[4] = { 0, 1, 1, 0 }, dv[4] = { 0, 0, 1, 1 };
+            for (int q = 0; q < 4; ++q)
+            {
+              int p[3];
+              p[a] = c[a] + side;
+              p[b] = c[b] + du[q];
+              p[d] = c[d] + dv[q];
+              ids[q] = node(p[0], p[1], p[2]);
+            }
+            // (b, d) counter-clockwise has normal +a.
+            if (side)
+            {
+              AddQuad(mesh, ids[0], ids[1], ids[2], ids[3]);
+            }
+            else
+            {
+              AddQuad(mesh, ids[0], ids[3], ids[2], ids[1]);
+            }
+          }
+        }
+      }
+    }
+  }
+  return mesh;
+}
+
+AreaVolume LBlockAreaVolume(const Point3& sides)
+{
+  const double x = sides[0], y = sides[1], z = sides[2];
+  // Three quarters of the box; the removed quadrant takes x/2 + y/2 of the
+  // outer perimeter and adds the same length of inner walls.
+  return { 2 * 0.75 * x * y + 2 * (x + y) * z, 0.75 * x * y * z };
+}
+
 AreaVolume RoundedBoxAreaVolume(const Point3& sides, double r)
 {
   const double a = sides[0] - 2 * r, b = sides[1] - 2 * r, c = sides[2] - 2 * r;

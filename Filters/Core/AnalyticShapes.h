@@ -30,6 +30,12 @@ TriangleMesh MakeTorus(double majorRadius, double minorRadius, int resolution);
 /// Closed cylinder along z, centred at the origin.
 TriangleMesh MakeCylinder(double radius, double height, int resolution);
 
+/// L-shaped block: the box [-x/2, x/2] x [-y/2, y/2] x [-z/2, z/2] minus
+/// its quadrant x > 0, y > 0 (through the whole thickness), so that the
+/// vertical edge at x = y = 0 is a sharp concave (reflex) edge. Every face is
+/// a regular grid with `resolution` cells per half side.
+TriangleMesh MakeLBlock(const Point3& sides, int resolution);
+
 /// Exact area and volume of the analytic shapes above (not of their meshes).
 struct AreaVolume
 {
@@ -40,6 +46,7 @@ AreaVolume RoundedBoxAreaVolume(const Point3& sides, double filletRadius);
 AreaVolume CapsuleAreaVolume(double radius, double axisLength);
 AreaVolume TorusAreaVolume(double majorRadius, double minorRadius);
 AreaVolume CylinderAreaVolume(double radius, double height);
+AreaVolume LBlockAreaVolume(const Point3& sides);
 }
 
 #endif

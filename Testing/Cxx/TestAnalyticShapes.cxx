@@ -86,6 +86,15 @@ const ShapeCase Cases[] = {
       const double cap = std::fabs(std::fabs(p[2]) - 1.5);
       return std::min(radial <= 1.0 + 1e-12 ? cap : 1e9, std::fabs(p[2]) <= 1.5 + 1e-12 ? side : 1e9);
     } },
+  { "LBlock", vtkAnalyticShapeSource::L_BLOCK, [](vtkAnalyticShapeSource*) {},
+    [](const double* p) {
+      double d = std::min({ 1.0 - std::fabs(p[0]), 1.0 - std::fabs(p[1]), 1.0 - std::fabs(p[2]) });
+      if (p[0] >= -1e-12 && p[1] >= -1e-12)
+      {
+        d = std::min({ d, std::fabs(p[0]), std::fabs(p[1]) }); // the inner walls
+      }
+      return std::fabs(d);
+    } },
 };
 
 class AnalyticShape : public ::testing::TestWithParam<ShapeCase>

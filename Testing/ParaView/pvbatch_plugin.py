@@ -57,4 +57,19 @@ volume = surface.GetFieldData().GetArray("Volume").GetValue(0)
 a, r, pi = 1.4, 0.3, 3.141592653589793
 exact = a ** 3 + 6 * r * a ** 2 + 3 * pi * r ** 2 * a + 4.0 / 3.0 * pi * r ** 3
 check(abs(volume / exact - 1) < 0.01, "rounded box volume %g, exact %g" % (volume, exact))
+# Sampling and the restricted Voronoi diagram, with its two outputs.
+sampler = BlueNoiseSurfaceSampler(Input=shape, NumberOfSamples=600, RandomSeed=3)
+rvd = RestrictedVoronoiDiagram(Input=shape, Sites=sampler)
+rvd.UpdatePipeline()
+cells = servermanager.Fetch(rvd, idx=0)
+sites = servermanager.Fetch(rvd, idx=1)
+check(sites.GetNumberOfPoints() == 600, "expected 600 sites, got %d" % sites.GetNumberOfPoints())
+check(cells.GetCellData().GetArray("SiteId") is not None, "RVD lacks SiteId")
+area = sites.GetPointData().GetArray("CellArea")
+total = sum(area.GetValue(i) for i in range(area.GetNumberOfTuples()))
+check(abs(total / surface.GetFieldData().GetArray("Area").GetValue(0) - 1) < 1e-9,
+      "RVD cell areas do not add up to the surface area")
+# The fillets are smooth (each facet turns by under 12 degrees): no sharp edges.
+check(sites.GetPointData().GetArray("ConvexFeature").GetRange() == (0, 0),
+      "sharp edges reported on a filleted box")
 print("pvbatch plugin test passed")

@@ -105,6 +105,40 @@ class PipelineTest(unittest.TestCase):
         self.assertTrue(validator.GetValid(), validator.GetErrorMessage())
         self.assertAlmostEqual(validator.GetVolume(), 1.0 / 6.0)
 
+    def test_sampler_and_restricted_voronoi_pipeline(self):
+        shape = medialaxis.vtkAnalyticShapeSource()
+        shape.SetShapeToTorus()
+        sampler = medialaxis.vtkBlueNoiseSurfaceSampler()
+        sampler.SetInputConnection(shape.GetOutputPort())
+        sampler.SetNumberOfSamples(1500)
+        sampler.SetRandomSeed(7)
+        rvd = medialaxis.vtkRestrictedVoronoiDiagram()
+        rvd.SetInputConnection(0, shape.GetOutputPort())
+        rvd.SetInputConnection(1, sampler.GetOutputPort())
+        rvd.SetFeatureAngle(30.0)
+        rvd.Update()
+        sites = rvd.GetOutputDataObject(1)
+        self.assertEqual(sites.GetNumberOfPoints(), 1500)
+        area = sites.GetPointData().GetArray("CellArea")
+        total = sum(area.GetValue(i) for i in range(area.GetNumberOfTuples()))
+        self.assertAlmostEqual(total / shape.GetExactArea(), 1.0, delta=0.01)
+        # A smooth torus has no sharp edges at a 30 degree tolerance.
+        convex = sites.GetPointData().GetArray("ConvexFeature")
+        self.assertEqual(convex.GetRange(), (0.0, 0.0))
+        cells = rvd.GetOutput(0)
+        self.assertEqual(cells.GetCellData().GetArray("SiteId").GetRange(), (0.0, 1499.0))
+
+        # Same seed, same sites; the output is independent of threads.
+        again = medialaxis.vtkBlueNoiseSurfaceSampler()
+        again.SetInputConnection(shape.GetOutputPort())
+        again.SetNumberOfSamples(1500)
+        again.SetRandomSeed(7)
+        again.SetNumberOfThreads(1)
+        again.Update()
+        a = sampler.GetOutput().GetPoints().GetData()
+        b = again.GetOutput().GetPoints().GetData()
+        self.assertTrue(all(a.GetTuple3(i) == b.GetTuple3(i) for i in range(1500)))
+
     def test_open_surface_is_refused(self):
         sphere = vtk.vtkSphereSource()
         clip = vtk.vtkClipPolyData()  # cut a hole: the surface is open

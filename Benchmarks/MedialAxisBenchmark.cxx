@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Per-stage wall time and peak resident memory of the MedialAxis pipeline.
+//
+//   medialaxis-benchmark [--samples N] [--threads T] [--scaling] [--shape torus|box|...] mesh...
+//
+// --scaling runs every mesh at 10K, 25K, 50K, 100K and 200K samples and
+// prints the fitted growth exponent of each stage's time.
+#include "AnalyticShapes.h"
+#include "BlueNoiseSampler.h"
+#include "Parallel.h"
+#include "RestrictedVoronoi.h"
+#include "vtkSurfaceFileReader.h"
+#include "vtkSurfacePreparation.h"
+
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace medialaxis;
+
+namespace
+{
+// Peak resident memory since the last reset, in MB (Linux /proc).
+void ResetPeakMemory()
+{
+  std::ofstream("/proc/self/clear_refs") << "5";
+}
+double PeakMemoryMB()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.rfind("VmHWM:", 0) == 0)
+    {
+      return std::stod(line.substr(6)) / 1024.0;
+    }
+  }
+  return 0.0;
+}
+
+struct Stage
+{
+  std::string Name;
+  double Seconds;
+  double PeakMB;
+};
+
+template <typename F>
+Stage Measure(const std::string& name, F&& work)
+{
+  ResetPeakMemory();
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return { name, seconds, PeakMemoryMB() };
+}
+
+bool LoadSurface(const std::string& spec, bool isShape, TriangleMesh& mesh, std::vector<Stage>& stages)
+{
+  if (isShape)
+  {
+    if (spec == "torus")
+      mesh = MakeTorus(2.0, 0.5, 64);
+    else if (spec == "sphere")
+      mesh = MakeSphere(1.0, 64);
+    else if (spec == "box")
+      mesh = MakeRoundedBox({ 2, 2, 2 }, 0.2, 32);
+    else
+    {
+      std::cerr << "unknown shape '" << spec << "' (torus, sphere, box)\n";
+      return false;
+    }
+    return true;
+  }
+  vtkNew<vtkSurfaceFileReader> reader;
+  reader->SetFileName(spec.c_str());
+  stages.push_back(Measure("read", [&] { reader->Update(); }));
+  if (reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    std::cerr << reader->GetErrorMessage() << "\n";
+    return false;
+  }
+  SurfacePreparationReport report;
+  stages.push_back(Measure("prepare", [&] { report = PrepareSurfaceMesh(reader->GetOutput(), mesh); }));
+  if (!report.Ok())
+  {
+    std::cerr << spec << ": " << report.Error << "\n";
+    return false;
+  }
+  return true;
+}
+
+std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples)
+{
+  std::vector<Stage> stages;
+  SurfaceSamples sites;
+  SamplingOptions sampling;
+  sampling.NumberOfSamples = samples;
+  stages.push_back(Measure("sampling", [&] { sites = SampleSurface(mesh, sampling); }));
+  RestrictedVoronoiDiagram rvd;
+  stages.push_back(Measure("rvd", [&] { rvd = ComputeRestrictedVoronoi(mesh, sites.Points); }));
+  return stages;
+}
+
+void PrintStages(const std::string& name, std::size_t triangles, std::size_t samples,
+  const std::vector<Stage>& stages)
+{
+  std::printf("%-22s %8zu tris %7zu samples |", name.c_str(), triangles, samples);
+  for (const Stage& s : stages)
+  {
+    std::printf(" %s %.3f s %.0f MB |", s.Name.c_str(), s.Seconds, s.PeakMB);
+  }
+  std::printf("\n");
+}
+}
+
+int main(int argc, char* argv[])
+{
+  std::size_t samples = 50000;
+  int threads = 0;
+  bool scaling = false;
+  std::vector<std::pair<std::string, bool>> inputs; // (path or shape, is shape)
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--samples" && i + 1 < argc)
+      samples = std::stoul(argv[++i]);
+    else if (arg == "--threads" && i + 1 < argc)
+      threads = std::stoi(argv[++i]);
+    else if (arg == "--scaling")
+      scaling = true;
+    else if (arg == "--shape" && i + 1 < argc)
+      inputs.emplace_back(argv[++i], true);
+    else if (arg == "-h" || arg == "--help")
+    {
+      std::cout << "usage: " << argv[0]
+                << " [--samples N] [--threads T] [--scaling] [--shape torus|sphere|box] mesh...\n";
+      return 0;
+    }
+    else
+      inputs.emplace_back(arg, false);
+  }
+  if (inputs.empty())
+  {
+    inputs.emplace_back("torus", true);
+  }
+
+  return RunWithThreads(threads, [&] {
+    for (const auto& [spec, isShape] : inputs)
+    {
+      TriangleMesh mesh;
+      std::vector<Stage> loading;
+      if (!LoadSurface(spec, isShape, mesh, loading))
+      {
+        return 1;
+      }
+      const std::string name = spec.substr(spec.find_last_of('/') + 1);
+      if (!scaling)
+      {
+        std::vector<Stage> stages = loading;
+        const auto run = RunPipeline(mesh, samples);
+        stages.insert(stages.end(), run.begin(), run.end());
+        PrintStages(name, mesh.Triangles.size(), samples, stages);
+        continue;
+      }
+      const std::size_t counts[] = { 10000, 25000, 50000, 100000, 200000 };
+      std::vector<std::vector<Stage>> runs;
+      for (std::size_t n : counts)
+      {
+        runs.push_back(RunPipeline(mesh, n));
+        PrintStages(name, mesh.Triangles.size(), n, runs.back());
+      }
+      // Least-squares slope of log(time) against log(samples), per stage.
+      std::printf("%-22s growth exponent (time ~ samples^k):", name.c_str());
+      for (std::size_t s = 0; s < runs[0].size(); ++s)
+      {
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        const double n = static_cast<double>(runs.size());
+        for (std::size_t r = 0; r < runs.size(); ++r)
+        {
+          const double x = std::log(double(counts[r])), y = std::log(runs[r][s].Seconds);
+          sx += x;
+          sy += y;
+          sxx += x * x;
+          sxy += x * y;
+        }
+        std::printf(" %s %.2f", runs[0][s].Name.c_str(), (n * sxy - sx * sy) / (n * sxx - sx * sx));
+      }
+      std::printf("\n");
+    }
+    return 0;
+  });
+}

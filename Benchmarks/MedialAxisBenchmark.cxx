@@ -3,12 +3,15 @@
 //
 //   medialaxis-benchmark [--samples N] [--threads T] [--scaling] [--shape torus|box|...] mesh...
 //
+// Memory: the process's resident peak during each stage, and in brackets
+// how far it rose above the resident size at the stage's start.
 // --scaling runs every mesh at 10K, 25K, 50K, 100K and 200K samples and
 // prints the fitted growth exponent of each stage's time.
 #include "AnalyticShapes.h"
 #include "BlueNoiseSampler.h"
 #include "Parallel.h"
 #include "RestrictedVoronoi.h"
+#include "VoronoiMedialAxis.h"
 #include "vtkSurfaceFileReader.h"
 #include "vtkSurfacePreparation.h"
 
@@ -34,15 +37,15 @@ void ResetPeakMemory()
 {
   std::ofstream("/proc/self/clear_refs") << "5";
 }
-double PeakMemoryMB()
+double StatusMB(const char* field)
 {
   std::ifstream status("/proc/self/status");
   std::string line;
   while (std::getline(status, line))
   {
-    if (line.rfind("VmHWM:", 0) == 0)
+    if (line.rfind(field, 0) == 0)
     {
-      return std::stod(line.substr(6)) / 1024.0;
+      return std::stod(line.substr(std::strlen(field))) / 1024.0;
     }
   }
   return 0.0;
@@ -52,18 +55,21 @@ struct Stage
 {
   std::string Name;
   double Seconds;
-  double PeakMB;
+  double PeakMB;  // resident peak of the whole process during the stage
+  double ExtraMB; // that peak minus the resident size when the stage began
 };
 
 template <typename F>
 Stage Measure(const std::string& name, F&& work)
 {
   ResetPeakMemory();
+  const double before = StatusMB("VmRSS:");
   const auto start = std::chrono::steady_clock::now();
   work();
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return { name, seconds, PeakMemoryMB() };
+  const double peak = StatusMB("VmHWM:");
+  return { name, seconds, peak, peak - before };
 }
 
 bool LoadSurface(const std::string& spec, bool isShape, TriangleMesh& mesh, std::vector<Stage>& stages)
@@ -110,6 +116,13 @@ std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples)
   stages.push_back(Measure("sampling", [&] { sites = SampleSurface(mesh, sampling); }));
   RestrictedVoronoiDiagram rvd;
   stages.push_back(Measure("rvd", [&] { rvd = ComputeRestrictedVoronoi(mesh, sites.Points); }));
+  VoronoiMedialAxisResult voronoi;
+  stages.push_back(Measure("voronoi", [&] {
+    voronoi = ComputeVoronoiMedialAxis(mesh, sites.Points, sites.Normals, rvd.ConcaveFeature);
+  }));
+  std::printf("  initial MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld\n",
+    voronoi.Mesh.Centers.size(), voronoi.Mesh.Faces.size(), EdgesNotOnFaces(voronoi.Mesh).size(),
+    static_cast<long long>(EulerCharacteristic(voronoi.Mesh)));
   return stages;
 }
 
@@ -119,7 +132,7 @@ void PrintStages(const std::string& name, std::size_t triangles, std::size_t sam
   std::printf("%-22s %8zu tris %7zu samples |", name.c_str(), triangles, samples);
   for (const Stage& s : stages)
   {
-    std::printf(" %s %.3f s %.0f MB |", s.Name.c_str(), s.Seconds, s.PeakMB);
+    std::printf(" %s %.3f s %.0f MB (+%.0f) |", s.Name.c_str(), s.Seconds, s.PeakMB, s.ExtraMB);
   }
   std::printf("\n");
 }

@@ -5,6 +5,8 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -54,6 +56,62 @@ void MedialMeshToPolyData(const MedialMesh& mesh, vtkPolyData* output)
   output->SetLines(lines);
   output->SetVerts(verts);
   output->GetPointData()->SetScalars(radius);
+}
+
+void AddAtlasArrays(
+  vtkPolyData* output, const std::vector<Index>& offsets, const std::vector<Index>& sites)
+{
+  vtkNew<vtkIdTypeArray> siteArray, offsetArray, count;
+  siteArray->SetName("AtlasSites");
+  siteArray->SetNumberOfTuples(static_cast<vtkIdType>(sites.size()));
+  std::copy(sites.begin(), sites.end(), siteArray->GetPointer(0));
+  offsetArray->SetName("AtlasOffsets");
+  offsetArray->SetNumberOfTuples(static_cast<vtkIdType>(offsets.size()));
+  std::copy(offsets.begin(), offsets.end(), offsetArray->GetPointer(0));
+  count->SetName("AtlasCount");
+  count->SetNumberOfTuples(static_cast<vtkIdType>(offsets.size()) - 1);
+  for (std::size_t v = 0; v + 1 < offsets.size(); ++v)
+  {
+    count->SetValue(static_cast<vtkIdType>(v), offsets[v + 1] - offsets[v]);
+  }
+  output->GetFieldData()->AddArray(siteArray);
+  output->GetFieldData()->AddArray(offsetArray);
+  output->GetPointData()->AddArray(count);
+}
+
+std::string GetAtlasArrays(vtkPolyData* input, std::vector<Index>& offsets, std::vector<Index>& sites)
+{
+  offsets.clear();
+  sites.clear();
+  vtkDataArray* siteArray = input->GetFieldData()->GetArray("AtlasSites");
+  vtkDataArray* offsetArray = input->GetFieldData()->GetArray("AtlasOffsets");
+  if (!siteArray || !offsetArray)
+  {
+    return "medial mesh has no Atlas (field data 'AtlasSites' and 'AtlasOffsets'): "
+           "compute it with vtkVoronoiMedialAxis";
+  }
+  const vtkIdType nv = input->GetNumberOfPoints();
+  if (offsetArray->GetNumberOfTuples() != nv + 1)
+  {
+    return "'AtlasOffsets' has " + std::to_string(offsetArray->GetNumberOfTuples()) +
+      " values for " + std::to_string(nv) + " vertices (expected one more)";
+  }
+  offsets.resize(static_cast<std::size_t>(nv + 1));
+  for (vtkIdType i = 0; i <= nv; ++i)
+  {
+    offsets[i] = static_cast<Index>(offsetArray->GetComponent(i, 0));
+    if (offsets[i] < 0 || offsets[i] > siteArray->GetNumberOfTuples() || (i > 0 && offsets[i] < offsets[i - 1]))
+    {
+      offsets.clear();
+      return "'AtlasOffsets' is not a non-decreasing list within 'AtlasSites'";
+    }
+  }
+  sites.resize(static_cast<std::size_t>(siteArray->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < siteArray->GetNumberOfTuples(); ++i)
+  {
+    sites[i] = static_cast<Index>(siteArray->GetComponent(i, 0));
+  }
+  return std::string();
 }
 
 std::string PolyDataToMedialMesh(vtkPolyData* input, MedialMesh& mesh)

@@ -8,6 +8,7 @@
 #include "MedialMesh.h"
 
 #include <string>
+#include <vector>
 
 class vtkPolyData;
 
@@ -25,6 +26,16 @@ void MedialMeshToPolyData(const MedialMesh& mesh, vtkPolyData* output);
 /// string on success, otherwise a message naming the defect (e.g. missing
 /// `Radius` array, a polygon that is not a triangle, duplicate triangles).
 std::string PolyDataToMedialMesh(vtkPolyData* input, MedialMesh& mesh);
+
+/// Stores each vertex's Atlas (the surface sites it corresponds to): field
+/// data `AtlasSites` (all lists concatenated in vertex order) and
+/// `AtlasOffsets` (vertex v owns AtlasSites[AtlasOffsets[v] ..
+/// AtlasOffsets[v + 1])), and point data `AtlasCount` for display.
+void AddAtlasArrays(
+  vtkPolyData* output, const std::vector<Index>& offsets, const std::vector<Index>& sites);
+
+/// Reads the Atlas arrays back; returns an error message ("" on success).
+std::string GetAtlasArrays(vtkPolyData* input, std::vector<Index>& offsets, std::vector<Index>& sites);
 
 /// The shared validity check for medial meshes given as poly data.
 inline std::string ValidateMedialPolyData(vtkPolyData* input)

@@ -158,6 +158,12 @@ std::vector<std::array<Index, 2>> EdgesNotOnFaces(const MedialMesh& mesh)
   return result;
 }
 
+long long EulerCharacteristic(const MedialMesh& mesh)
+{
+  return static_cast<long long>(mesh.Centers.size()) - static_cast<long long>(AllEdges(mesh).size()) +
+    static_cast<long long>(mesh.Faces.size());
+}
+
 std::vector<Index> IsolatedVertices(const MedialMesh& mesh)
 {
   std::vector<char> used(mesh.Centers.size(), 0);

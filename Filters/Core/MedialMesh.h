@@ -45,6 +45,9 @@ std::vector<std::array<Index, 2>> EdgesNotOnFaces(const MedialMesh& mesh);
 /// Every distinct edge, face edges included, sorted by (min, max) vertex id.
 std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh);
 
+/// V - E + F of the complex (E counts every distinct edge, face edges included).
+long long EulerCharacteristic(const MedialMesh& mesh);
+
 /// Ids of vertices referenced by no edge and no face.
 std::vector<Index> IsolatedVertices(const MedialMesh& mesh);
 }

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vtkVoronoiMedialAxis.h"
+
+#include "Parallel.h"
+#include "VoronoiMedialAxis.h"
+#include "vtkMedialMeshConversion.h"
+#include "vtkSurfacePreparation.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPolyData.h"
+
+vtkStandardNewMacro(vtkVoronoiMedialAxis);
+
+vtkVoronoiMedialAxis::vtkVoronoiMedialAxis()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+int vtkVoronoiMedialAxis::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkPointSet");
+  return 1;
+}
+
+int vtkVoronoiMedialAxis::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPointSet* sitesIn = vtkPointSet::GetData(inputVector[1]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+
+  medialaxis::TriangleMesh surface;
+  const auto report = medialaxis::PrepareSurfaceMesh(input, surface);
+  if (!report.Ok())
+  {
+    vtkErrorMacro(<< "cannot compute the medial axis: " << report.Error);
+    return 0;
+  }
+  if (!sitesIn || sitesIn->GetNumberOfPoints() < 4)
+  {
+    vtkErrorMacro(<< "input port 1 needs at least 4 sites (got "
+                  << (sitesIn ? sitesIn->GetNumberOfPoints() : 0)
+                  << "): connect the sites output of vtkRestrictedVoronoiDiagram");
+    return 0;
+  }
+  const vtkIdType ns = sitesIn->GetNumberOfPoints();
+  std::vector<medialaxis::Point3> sites(static_cast<std::size_t>(ns)), normals;
+  for (vtkIdType i = 0; i < ns; ++i)
+  {
+    sitesIn->GetPoint(i, sites[i].data());
+    if (!(std::isfinite(sites[i][0]) && std::isfinite(sites[i][1]) && std::isfinite(sites[i][2])))
+    {
+      vtkErrorMacro(<< "site " << i << " has NaN or infinite coordinates");
+      return 0;
+    }
+  }
+  if (vtkDataArray* n = sitesIn->GetPointData()->GetArray("Normals"))
+  {
+    if (n->GetNumberOfComponents() == 3)
+    {
+      normals.resize(sites.size());
+      for (vtkIdType i = 0; i < ns; ++i)
+      {
+        n->GetTuple(i, normals[i].data());
+      }
+    }
+  }
+  std::vector<std::uint8_t> concave;
+  if (vtkDataArray* c = sitesIn->GetPointData()->GetArray("ConcaveFeature"))
+  {
+    concave.resize(sites.size());
+    for (vtkIdType i = 0; i < ns; ++i)
+    {
+      concave[i] = c->GetComponent(i, 0) != 0.0 ? 1 : 0;
+    }
+  }
+  else if (this->ConcaveFiltering)
+  {
+    vtkWarningMacro(<< "the sites have no 'ConcaveFeature' array: concave filtering skipped "
+                       "(connect the sites output of vtkRestrictedVoronoiDiagram)");
+  }
+
+  medialaxis::VoronoiMedialAxisOptions options;
+  options.ConcaveFiltering = this->ConcaveFiltering;
+  options.ConcaveFilterAlpha = this->ConcaveFilterAlpha;
+  options.RelativeWeldTolerance = this->RelativeWeldTolerance;
+  options.Progress = [this](double f) {
+    this->UpdateProgress(0.05 + 0.9 * f);
+    return !this->GetAbortExecute();
+  };
+  const medialaxis::VoronoiMedialAxisResult result = medialaxis::RunWithThreads(
+    this->NumberOfThreads, [&] { return medialaxis::ComputeVoronoiMedialAxis(surface, sites, normals, concave, options); });
+  if (result.Aborted)
+  {
+    return 1;
+  }
+
+  medialaxis::MedialMeshToPolyData(result.Mesh, output);
+  medialaxis::AddAtlasArrays(output, result.AtlasOffsets, result.AtlasSites);
+  vtkNew<vtkIdTypeArray> sitePair;
+  sitePair->SetName("SitePair");
+  sitePair->SetNumberOfComponents(2);
+  sitePair->SetNumberOfTuples(output->GetNumberOfCells());
+  const vtkIdType others = output->GetNumberOfVerts() + output->GetNumberOfLines();
+  for (vtkIdType c = 0; c < others; ++c)
+  {
+    sitePair->SetTypedComponent(c, 0, -1);
+    sitePair->SetTypedComponent(c, 1, -1);
+  }
+  for (std::size_t f = 0; f < result.FaceSitePair.size(); ++f)
+  {
+    sitePair->SetTypedComponent(others + static_cast<vtkIdType>(f), 0, result.FaceSitePair[f][0]);
+    sitePair->SetTypedComponent(others + static_cast<vtkIdType>(f), 1, result.FaceSitePair[f][1]);
+  }
+  output->GetCellData()->AddArray(sitePair);
+  for (const auto& [name, value] : { std::pair<const char*, std::size_t>{ "DelaunayCells", result.DelaunayCells },
+         { "InsideCells", result.InsideCells }, { "AmbiguousInsideTests", result.AmbiguousInsideTests },
+         { "WeldedCells", result.WeldedCells }, { "FilteredTriangles", result.FilteredFaces },
+         { "DroppedPockets", result.DroppedPockets } })
+  {
+    vtkNew<vtkIdTypeArray> a;
+    a->SetName(name);
+    a->InsertNextValue(static_cast<vtkIdType>(value));
+    output->GetFieldData()->AddArray(a);
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkVoronoiMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ConcaveFiltering: " << this->ConcaveFiltering << "\n";
+  os << indent << "ConcaveFilterAlpha: " << this->ConcaveFilterAlpha << "\n";
+  os << indent << "RelativeWeldTolerance: " << this->RelativeWeldTolerance << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+}

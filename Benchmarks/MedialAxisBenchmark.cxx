@@ -118,7 +118,7 @@ std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples)
   stages.push_back(Measure("rvd", [&] { rvd = ComputeRestrictedVoronoi(mesh, sites.Points); }));
   VoronoiMedialAxisResult voronoi;
   stages.push_back(Measure("voronoi", [&] {
-    voronoi = ComputeVoronoiMedialAxis(mesh, sites.Points, sites.Normals, rvd.ConcaveFeature);
+    voronoi = ComputeVoronoiMedialAxis(mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
   }));
   std::printf("  initial MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld\n",
     voronoi.Mesh.Centers.size(), voronoi.Mesh.Faces.size(), EdgesNotOnFaces(voronoi.Mesh).size(),

@@ -54,7 +54,8 @@ int vtkVoronoiMedialAxis::RequestData(
     return 0;
   }
   const vtkIdType ns = sitesIn->GetNumberOfPoints();
-  std::vector<medialaxis::Point3> sites(static_cast<std::size_t>(ns)), normals;
+  std::vector<medialaxis::Point3> sites(static_cast<std::size_t>(ns));
+  std::vector<medialaxis::Index> siteTriangles;
   for (vtkIdType i = 0; i < ns; ++i)
   {
     sitesIn->GetPoint(i, sites[i].data());
@@ -64,15 +65,13 @@ int vtkVoronoiMedialAxis::RequestData(
       return 0;
     }
   }
-  if (vtkDataArray* n = sitesIn->GetPointData()->GetArray("Normals"))
+  // The sampler's TriangleId saves a nearest-triangle search per site.
+  if (vtkDataArray* t = sitesIn->GetPointData()->GetArray("TriangleId"))
   {
-    if (n->GetNumberOfComponents() == 3)
+    siteTriangles.resize(sites.size());
+    for (vtkIdType i = 0; i < ns; ++i)
     {
-      normals.resize(sites.size());
-      for (vtkIdType i = 0; i < ns; ++i)
-      {
-        n->GetTuple(i, normals[i].data());
-      }
+      siteTriangles[i] = static_cast<medialaxis::Index>(t->GetComponent(i, 0));
     }
   }
   std::vector<std::uint8_t> concave;
@@ -99,7 +98,7 @@ int vtkVoronoiMedialAxis::RequestData(
     return !this->GetAbortExecute();
   };
   const medialaxis::VoronoiMedialAxisResult result = medialaxis::RunWithThreads(
-    this->NumberOfThreads, [&] { return medialaxis::ComputeVoronoiMedialAxis(surface, sites, normals, concave, options); });
+    this->NumberOfThreads, [&] { return medialaxis::ComputeVoronoiMedialAxis(surface, sites, siteTriangles, concave, options); });
   if (result.Aborted)
   {
     return 1;

@@ -5,13 +5,15 @@
  *
  * Input port 0: the surface. Input port 1: the sites, best the sites output
  * (port 1) of vtkRestrictedVoronoiDiagram, whose `ConcaveFeature` flags
- * drive the concave filtering and whose `Normals` speed up the inside test.
+ * drive the concave filtering and whose `TriangleId` (from the sampler)
+ * saves a search; sites without it are matched to their nearest triangle.
  *
  * The Delaunay triangulation of the sites (CGAL) gives the Voronoi vertices
  * (circumcentres). A vertex is kept when it lies inside the surface: a
- * circumcentre clearly behind the tangent planes of its four sites is
- * inside, one clearly in front of them is outside, and every other one is
- * decided by exact-predicate ray casting against the surface. A Voronoi face
+ * circumcentre clearly in front of the tangent planes of its four sites is
+ * outside, a large ball clearly behind them is inside, and every other one
+ * (every small ball among them) is decided by the closest surface point and
+ * its angle-weighted pseudo-normal. A Voronoi face
  * is kept when all its vertices are, and fan-triangulated. Circumcentres of
  * adjacent cells that coincide (co-spherical sites) are welded into one
  * vertex, so that no sliver or duplicate remains.

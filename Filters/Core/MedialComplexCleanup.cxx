@@ -250,12 +250,14 @@ std::size_t DropSmallComponents(VoronoiMedialAxisResult& result, std::size_t min
   {
     ++size[pieces.Find(static_cast<Index>(v))];
   }
+  // The largest piece always stays (a sphere's medial axis is one point).
+  const std::size_t largest = nv ? *std::max_element(size.begin(), size.end()) : 0;
   std::vector<char> vertexAlive(nv, 1);
   std::size_t dropped = 0;
   for (std::size_t v = 0; v < nv; ++v)
   {
     const Index root = pieces.Find(static_cast<Index>(v));
-    if (size[root] < minimumVertices)
+    if (size[root] < minimumVertices && size[root] < largest)
     {
       vertexAlive[v] = 0;
       dropped += root == static_cast<Index>(v) ? 1 : 0;

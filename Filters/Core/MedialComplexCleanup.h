@@ -19,7 +19,8 @@ std::size_t CollapseFlaggedTriangles(VoronoiMedialAxisResult& result, const std:
 
 /// Drops connected pieces with fewer than `minimumVertices` vertices:
 /// isolated pockets of Delaunay cells whose circumcentres are inside while
-/// all their neighbours' are outside. Returns the number of pieces dropped.
+/// all their neighbours' are outside. The largest piece always stays.
+/// Returns the number of pieces dropped.
 std::size_t DropSmallComponents(VoronoiMedialAxisResult& result, std::size_t minimumVertices);
 }
 

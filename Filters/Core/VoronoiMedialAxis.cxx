@@ -4,6 +4,7 @@
 #include "VoronoiMedialAxis.h"
 
 #include "DisjointSets.h"
+#include "TriangleAdjacency.h"
 #include "MedialComplexCleanup.h"
 #include "Vec3.h"
 
@@ -80,6 +81,25 @@ public:
     this->TreePtr->build();
     this->TreePtr->accelerate_distance_queries();
     this->Side = std::make_unique<SideOfMesh>(*this->TreePtr);
+
+    // Pseudo-normals: faces, and angle-weighted at vertices.
+    const std::size_t nt = this->Surface.Triangles.size();
+    this->Adjacency = ComputeTriangleAdjacency(this->Surface, 3.14159265358979);
+    this->FaceNormals.resize(nt);
+    this->VertexNormals.assign(this->Surface.Points.size(), Point3{ 0.0, 0.0, 0.0 });
+    for (std::size_t f = 0; f < nt; ++f)
+    {
+      const Triangle& t = this->Surface.Triangles[f];
+      this->FaceNormals[f] = TriangleNormal(this->Surface, static_cast<Index>(f));
+      for (int k = 0; k < 3; ++k)
+      {
+        const Point3& p = this->Surface.Points[t[k]];
+        const Point3 e1 = Normalized(this->Surface.Points[t[(k + 1) % 3]] - p);
+        const Point3 e2 = Normalized(this->Surface.Points[t[(k + 2) % 3]] - p);
+        const double angle = std::acos(std::clamp(Dot(e1, e2), -1.0, 1.0));
+        this->VertexNormals[t[k]] = this->VertexNormals[t[k]] + angle * this->FaceNormals[f];
+      }
+    }
   }
 
   bool Inside(const Point3& p) const
@@ -87,19 +107,58 @@ public:
     return (*this->Side)(ToKernel(p)) == CGAL::ON_BOUNDED_SIDE;
   }
 
+  /// Inside test by the closest surface point and the angle-weighted
+  /// pseudo-normal of the face, edge or vertex it lies on (Baerentzen and
+  /// Aanaes 2005): exact for a closed manifold, and fast for points near
+  /// the surface, where the AABB search is short.
+  /// `nearPoint` on triangle `nearTriangle` bounds the search.
+  bool InsideByPseudoNormal(const Point3& p, const Point3& nearPoint, Index nearTriangle) const
+  {
+    const Tree::Point_and_primitive_id hint(
+      ToKernel(nearPoint), SurfaceMesh::Face_index(static_cast<SurfaceMesh::size_type>(nearTriangle)));
+    const auto hit = this->TreePtr->closest_point_and_primitive(ToKernel(p), hint);
+    const Point3 q = ToPoint(hit.first);
+    const Index f = static_cast<Index>(hit.second.idx());
+    const Triangle& t = this->Surface.Triangles[f];
+    const Point3 &a = this->Surface.Points[t[0]], &b = this->Surface.Points[t[1]],
+                 &c = this->Surface.Points[t[2]];
+    // Barycentric coordinates of q.
+    const Point3 n = Cross(b - a, c - a);
+    const double area2 = Dot(n, n);
+    const double w[3] = { Dot(Cross(c - b, q - b), n) / area2, Dot(Cross(a - c, q - c), n) / area2,
+      Dot(Cross(b - a, q - a), n) / area2 };
+    constexpr double eps = 1e-9;
+    const int zeros = (w[0] < eps) + (w[1] < eps) + (w[2] < eps);
+    Point3 normal;
+    if (zeros == 0)
+    {
+      normal = this->FaceNormals[f];
+    }
+    else if (zeros == 1)
+    {
+      // On the edge opposite the vertex with weight ~0: edge k runs from
+      // vertex k to vertex k + 1, so it is opposite vertex k + 2.
+      const int opposite = w[0] < eps ? 0 : (w[1] < eps ? 1 : 2);
+      const int k = (opposite + 1) % 3;
+      const Index across = this->Adjacency.Neighbour[f][k];
+      normal = this->FaceNormals[f] + (across >= 0 ? this->FaceNormals[across] : this->FaceNormals[f]);
+    }
+    else
+    {
+      const int vertex = w[0] >= eps ? 0 : (w[1] >= eps ? 1 : 2);
+      normal = this->VertexNormals[t[vertex]];
+    }
+    return Dot(p - q, normal) < 0.0;
+  }
+
   double Distance(const Point3& p) const
   {
     return std::sqrt(this->TreePtr->squared_distance(ToKernel(p)));
   }
 
-  Point3 NormalAtClosestPoint(const Point3& p) const
+  Index NearestTriangle(const Point3& p) const
   {
-    const auto hit = this->TreePtr->closest_point_and_primitive(ToKernel(p));
-    const auto h = halfedge(hit.second, this->Mesh);
-    const KPoint& a = this->Mesh.point(source(h, this->Mesh));
-    const KPoint& b = this->Mesh.point(target(h, this->Mesh));
-    const KPoint& c = this->Mesh.point(target(next(h, this->Mesh), this->Mesh));
-    return Normalized(Cross(ToPoint(b) - ToPoint(a), ToPoint(c) - ToPoint(a)));
+    return static_cast<Index>(this->TreePtr->closest_point_and_primitive(ToKernel(p)).second.idx());
   }
 
 private:
@@ -107,6 +166,8 @@ private:
   SurfaceMesh Mesh;
   std::unique_ptr<Tree> TreePtr;
   std::unique_ptr<SideOfMesh> Side;
+  TriangleAdjacency Adjacency;
+  std::vector<Point3> FaceNormals, VertexNormals;
 };
 
 double BoundingDiagonal(const TriangleMesh& surface)
@@ -125,7 +186,7 @@ double BoundingDiagonal(const TriangleMesh& surface)
 }
 
 VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
-  const std::vector<Point3>& sites, const std::vector<Point3>& normalsIn,
+  const std::vector<Point3>& sites, const std::vector<Index>& siteTrianglesIn,
   const std::vector<std::uint8_t>& concaveFeature, const VoronoiMedialAxisOptions& options)
 {
   VoronoiMedialAxisResult result;
@@ -212,64 +273,80 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       }
     });
   std::vector<Delaunay::Cell_handle>().swap(cells);
-  const std::vector<Point3>* normals = &normalsIn;
-  std::vector<Point3> computedNormals;
-  if (normalsIn.size() != sites.size())
+  // Each site's triangle (given, or the nearest) and its normal.
+  std::vector<Index> siteTriangle = siteTrianglesIn;
+  const Index nt = static_cast<Index>(surface.Triangles.size());
+  bool valid = siteTriangle.size() == sites.size();
+  for (std::size_t i = 0; valid && i < siteTriangle.size(); ++i)
   {
-    computedNormals.resize(sites.size());
+    valid = siteTriangle[i] >= 0 && siteTriangle[i] < nt;
+  }
+  if (!valid)
+  {
+    siteTriangle.resize(sites.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sites.size(), 1024),
       [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
         {
-          computedNormals[i] = queries.NormalAtClosestPoint(sites[i]);
+          siteTriangle[i] = queries.NearestTriangle(sites[i]);
         }
       });
-    normals = &computedNormals;
   }
-  // A circumcentre is clearly inside (outside) when it lies well behind
-  // (in front of) the tangent planes of all its four sites; anything less
-  // clear-cut is decided by ray casting.
+  std::vector<Point3> normal(sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i)
+  {
+    normal[i] = TriangleNormal(surface, siteTriangle[i]);
+  }
+  // A circumcentre clearly in front of the tangent planes of its four sites
+  // is outside, and a large ball clearly behind them is inside. Every other
+  // one is decided exactly, by the closest surface point and its
+  // pseudo-normal; that includes all small balls: in thin parts a small
+  // ball's centre can be behind all four tangent planes and still outside,
+  // past another part of the surface.
   constexpr double clearCosine = 0.1;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 4096),
+  double area = 0.0;
+  for (std::size_t t = 0; t < surface.Triangles.size(); ++t)
+  {
+    const Triangle& tri = surface.Triangles[t];
+    area += 0.5 * Norm(Cross(surface.Points[tri[1]] - surface.Points[tri[0]],
+                     surface.Points[tri[2]] - surface.Points[tri[0]]));
+  }
+  const double smallRadius = 4.0 * std::sqrt(2.0 * area / (std::sqrt(3.0) * sites.size()));
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 1024),
     [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t c = r.begin(); c != r.end(); ++c)
       {
+        const Point3& x = centre[c];
+        if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+        {
+          continue; // a flat cell's circumcentre overflowed: far outside
+        }
         int behind = 0, front = 0;
         for (int k = 0; k < 4; ++k)
         {
           const Index s = cellSites[c][k];
           const Point3 d = centre[c] - sites[s];
-          const double along = Dot(d, (*normals)[s]);
-          const double length = Norm(d);
+          const double along = Dot(d, normal[s]), length = Norm(d);
           behind += along < -clearCosine * length ? 1 : 0;
           front += along > clearCosine * length ? 1 : 0;
         }
-        if (behind == 4)
+        if (front == 4)
+        {
+          continue;
+        }
+        const Index s0 = cellSites[c][0];
+        if (behind == 4 && Norm(centre[c] - sites[s0]) >= smallRadius)
         {
           inside[c] = 1;
+          continue;
         }
-        else if (front != 4)
-        {
-          ambiguous[c] = 1;
-        }
+        ambiguous[c] = 1;
+        inside[c] = queries.InsideByPseudoNormal(centre[c], sites[s0], siteTriangle[s0]) ? 1 : 0;
       }
     });
   for (char a : ambiguous)
   {
     result.AmbiguousInsideTests += a;
-  }
-  if (result.AmbiguousInsideTests)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 1024),
-      [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t c = r.begin(); c != r.end(); ++c)
-        {
-          if (ambiguous[c])
-          {
-            inside[c] = queries.Inside(centre[c]) ? 1 : 0;
-          }
-        }
-      });
   }
   if (!report(0.7))
   {

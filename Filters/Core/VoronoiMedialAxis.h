@@ -44,19 +44,19 @@ struct VoronoiMedialAxisResult
   // What happened, for reports and tests.
   std::size_t DelaunayCells = 0;
   std::size_t InsideCells = 0;
-  std::size_t AmbiguousInsideTests = 0; // decided by ray casting, not by normals
+  std::size_t AmbiguousInsideTests = 0; // decided by the exact test, not by normals
   std::size_t WeldedCells = 0;          // cells merged into another's vertex
   std::size_t FilteredFaces = 0;        // triangles removed by Eq. 4 (by collapses)
   std::size_t DroppedPockets = 0;       // tiny disconnected pieces removed
   bool Aborted = false;
 };
 
-/// `normals`: unit outward surface normal at each site (may be empty: they
-/// are then taken from the nearest surface triangle). `concaveFeature`: per
-/// site, 1 if its restricted cell crosses a concave sharp edge (may be empty:
-/// no concave filtering).
+/// `siteTriangles`: the surface triangle each site lies on (may be empty:
+/// the nearest triangle is then found). `concaveFeature`: per site, 1 if its
+/// restricted cell crosses a concave sharp edge (may be empty: no concave
+/// filtering).
 VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
-  const std::vector<Point3>& sites, const std::vector<Point3>& normals,
+  const std::vector<Point3>& sites, const std::vector<Index>& siteTriangles,
   const std::vector<std::uint8_t>& concaveFeature,
   const VoronoiMedialAxisOptions& options = VoronoiMedialAxisOptions());
 }

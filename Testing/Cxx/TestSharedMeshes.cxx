@@ -3,7 +3,12 @@
 // terms) reads and prepares into a closed, manifold, outward surface whose
 // genus matches the one SOURCES.md gives. Skipped when the set is absent.
 #include "TestHelpers.h"
+#include "BlueNoiseSampler.h"
+#include "RestrictedVoronoi.h"
+#include "VoronoiMedialAxis.h"
 #include "vtkMedialSurfaceValidator.h"
+#include "vtkSelectEnclosedPoints.h"
+#include "vtkSurfacePreparation.h"
 #include "vtkSurfaceFileReader.h"
 
 #include "vtkCellArray.h"
@@ -12,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -69,6 +75,56 @@ std::map<std::string, Expected> ReadSourcesTable()
   return table;
 }
 
+// Meshes whose initial medial mesh (10,000 sites) does not have the solid's
+// Euler characteristic, with the reason. All have parts thinner than the
+// sample spacing (about 0.8% of the diagonal at 10,000 sites), where the
+// Voronoi diagram of the samples leaks through the surface, the failure mode
+// of the paper's Fig. 19; casting and fertility are right at 50,000 sites.
+const std::map<std::string, std::string>& KnownTopologyExceptions()
+{
+  static const std::map<std::string, std::string> exceptions = {
+    { "camel.off", "thin legs and neck" },
+    { "casting.off", "thin walls between bolt holes; right at 50,000 sites" },
+    { "cheburashka.off", "thin ears" },
+    { "dragon.obj", "thin claws, horns and teeth" },
+    { "elephant.off", "thin trunk and tail" },
+    { "fertility.off", "thin arms; right at 50,000 sites" },
+    { "octopus.off", "thin tentacles; self-intersecting (30 triangle pairs)" },
+  };
+  return exceptions;
+}
+
+// Self-intersecting meshes, where inside and outside are ambiguous near the
+// intersections (the winding number and the closest face can disagree).
+const std::map<std::string, std::string>& SelfIntersecting()
+{
+  static const std::map<std::string, std::string> meshes = {
+    { "block.off", "37 self-intersecting triangle pairs" },
+    { "octopus.off", "30 self-intersecting triangle pairs where tentacles cross" },
+  };
+  return meshes;
+}
+
+double WindingNumber(const medialaxis::TriangleMesh& surface, const medialaxis::Point3& p)
+{
+  double total = 0.0;
+  for (const auto& t : surface.Triangles)
+  {
+    double a[3], b[3], c[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      a[k] = surface.Points[t[0]][k] - p[k];
+      b[k] = surface.Points[t[1]][k] - p[k];
+      c[k] = surface.Points[t[2]][k] - p[k];
+    }
+    auto dot = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+    const double la = std::sqrt(dot(a, a)), lb = std::sqrt(dot(b, b)), lc = std::sqrt(dot(c, c));
+    const double bc[3] = { b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2], b[0] * c[1] - b[1] * c[0] };
+    total += 2.0 * std::atan2(dot(a, bc), la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb);
+  }
+  return total / (4.0 * 3.14159265358979323846);
+}
+
 class SharedMesh : public ::testing::TestWithParam<const char*>
 {
 };
@@ -104,6 +160,78 @@ TEST_P(SharedMesh, PreparesToClosedOutwardSurfaceOfTheRightGenus)
   const vtkIdType f = surface->GetNumberOfPolys();
   const vtkIdType e = 3 * f / 2;
   EXPECT_EQ(v - e + f, 2 - 2 * expected.Genus) << name;
+}
+
+// The initial medial mesh of every shared mesh: no vertex outside the surface
+// (checked by VTK's independent ray casting) and, where SOURCES.md gives the
+// genus, Euler characteristic 1 - genus.
+TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
+{
+  const std::string name = GetParam();
+  const std::string path = MeshDir + "/" + name;
+  if (!std::ifstream(path).good())
+  {
+    GTEST_SKIP() << "shared meshes not present at " << MeshDir;
+  }
+  const Expected expected = ReadSourcesTable().at(name);
+  vtkNew<vtkSurfaceFileReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  medialaxis::TriangleMesh surface;
+  ASSERT_TRUE(medialaxis::PrepareSurfaceMesh(reader->GetOutput(), surface).Ok());
+  medialaxis::SamplingOptions sampling;
+  sampling.NumberOfSamples = 10000;
+  const auto sites = medialaxis::SampleSurface(surface, sampling);
+  const auto rvd = medialaxis::ComputeRestrictedVoronoi(surface, sites.Points);
+  const auto mat =
+    medialaxis::ComputeVoronoiMedialAxis(surface, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
+  const auto& mesh = mat.Mesh;
+  ASSERT_GT(mesh.Centers.size(), 0u);
+  EXPECT_TRUE(medialaxis::ValidateMedialMesh(mesh).IsValid());
+
+  vtkNew<vtkPoints> points;
+  for (const auto& c : mesh.Centers)
+  {
+    points->InsertNextPoint(c.data());
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+  vtkNew<vtkSelectEnclosedPoints> enclosed;
+  enclosed->SetInputData(cloud);
+  enclosed->SetSurfaceData(reader->GetOutput());
+  enclosed->Update();
+  // VTK's ray casting has a tolerance; vertices it calls outside are checked
+  // again with the exact generalised winding number of the surface.
+  enclosed->SetTolerance(1e-9);
+  enclosed->Update();
+  vtkIdType outside = 0, disputed = 0;
+  for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i)
+  {
+    if (!enclosed->IsInside(i))
+    {
+      ++disputed;
+      outside += std::fabs(WindingNumber(surface, mesh.Centers[i])) < 0.5 ? 1 : 0;
+    }
+  }
+  if (SelfIntersecting().count(name) == 0)
+  {
+    EXPECT_EQ(outside, 0) << name << " (" << disputed << " disputed by ray casting)";
+  }
+  else
+  {
+    std::cout << name << ": " << outside << " vertices outside by winding number ("
+              << SelfIntersecting().at(name) << ")\n";
+  }
+
+  const long long chi = medialaxis::EulerCharacteristic(mesh);
+  std::cout << name << ": " << mesh.Centers.size() << " vertices, " << mesh.Faces.size()
+            << " triangles, Euler characteristic " << chi << " (1 - genus = " << 1 - expected.Genus
+            << "), " << mat.DroppedPockets << " pockets, " << mat.FilteredFaces
+            << " filtered triangles\n";
+  if (KnownTopologyExceptions().count(name) == 0)
+  {
+    EXPECT_EQ(chi, 1 - expected.Genus) << name;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(All, SharedMesh,

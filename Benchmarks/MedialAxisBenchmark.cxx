@@ -120,9 +120,11 @@ std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples)
   stages.push_back(Measure("voronoi", [&] {
     voronoi = ComputeVoronoiMedialAxis(mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
   }));
-  std::printf("  initial MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld\n",
+  std::printf("  initial MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "
+              "%zu Delaunay cells, %zu exact inside tests\n",
     voronoi.Mesh.Centers.size(), voronoi.Mesh.Faces.size(), EdgesNotOnFaces(voronoi.Mesh).size(),
-    static_cast<long long>(EulerCharacteristic(voronoi.Mesh)));
+    static_cast<long long>(EulerCharacteristic(voronoi.Mesh)), voronoi.DelaunayCells,
+    voronoi.AmbiguousInsideTests);
   return stages;
 }
 

@@ -1,12 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Embedding MedialAxis in a VTK C++ application: read a surface (or make a
-// filleted test part), check and repair it, and write it as .vtp.
+// filleted test part), check and repair it, sample it, split it into
+// restricted Voronoi cells and compute its initial medial mesh; write each
+// result (.vtp, and the medial mesh also as .ma).
 //
-//   PrepareSurfaceExample [--output DIR] [mesh.obj|.off|.ply|.stl|.vtp|.vtk]
+//   PrepareSurfaceExample [--output DIR] [--samples N] [mesh.obj|.off|.ply|.stl|.vtp|.vtk]
 #include "vtkAnalyticShapeSource.h"
+#include "vtkBlueNoiseSurfaceSampler.h"
+#include "vtkMedialAxisWriter.h"
 #include "vtkMedialSurfaceValidator.h"
+#include "vtkRestrictedVoronoiDiagram.h"
 #include "vtkSurfaceFileReader.h"
+#include "vtkVoronoiMedialAxis.h"
 
+#include "vtkAlgorithmOutput.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -20,6 +27,7 @@ int main(int argc, char* argv[])
 {
   std::string outputDir = "output";
   std::string input;
+  vtkIdType samples = 10000;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -27,9 +35,13 @@ int main(int argc, char* argv[])
     {
       outputDir = argv[++i];
     }
+    else if (arg == "--samples" && i + 1 < argc)
+    {
+      samples = std::stoll(argv[++i]);
+    }
     else if (arg == "--help" || arg == "-h")
     {
-      std::cout << "usage: " << argv[0] << " [--output DIR] [surface file]\n"
+      std::cout << "usage: " << argv[0] << " [--output DIR] [--samples N] [surface file]\n"
                 << "Without a file, a box with rounded edges is generated.\n";
       return 0;
     }
@@ -75,16 +87,44 @@ int main(int argc, char* argv[])
             << "\n"
             << validator->GetNotes();
 
-  vtksys::SystemTools::MakeDirectory(outputDir);
-  const std::string path = outputDir + "/" + stem + "_prepared.vtp";
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(surface);
-  writer->SetFileName(path.c_str());
-  if (writer->Write() != 1)
+  vtkNew<vtkBlueNoiseSurfaceSampler> sampler;
+  sampler->SetInputConnection(validator->GetOutputPort());
+  sampler->SetNumberOfSamples(samples);
+  vtkNew<vtkRestrictedVoronoiDiagram> rvd;
+  rvd->SetInputConnection(0, validator->GetOutputPort());
+  rvd->SetInputConnection(1, sampler->GetOutputPort());
+  vtkNew<vtkVoronoiMedialAxis> voronoi;
+  voronoi->SetInputConnection(0, validator->GetOutputPort());
+  voronoi->SetInputConnection(1, rvd->GetOutputPort(1));
+  voronoi->Update();
+  vtkPolyData* mat = voronoi->GetOutput();
+  if (mat->GetNumberOfPoints() == 0)
   {
-    std::cerr << "cannot write " << path << "\n";
+    std::cerr << "the medial axis computation failed\n";
     return 4;
   }
-  std::cout << "wrote " << path << "\n";
-  return 0;
+  std::cout << "initial medial mesh: " << mat->GetNumberOfPoints() << " spheres, "
+            << mat->GetNumberOfPolys() << " triangles, " << mat->GetNumberOfLines()
+            << " lines (from " << samples << " sites)\n";
+
+  vtksys::SystemTools::MakeDirectory(outputDir);
+  auto writeVtp = [&outputDir, &stem](vtkAlgorithmOutput* port, const std::string& suffix) {
+    const std::string path = outputDir + "/" + stem + suffix + ".vtp";
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputConnection(port);
+    writer->SetFileName(path.c_str());
+    const bool ok = writer->Write() == 1;
+    std::cout << (ok ? "wrote " : "cannot write ") << path << "\n";
+    return ok;
+  };
+  bool ok = writeVtp(validator->GetOutputPort(), "_prepared");
+  ok = writeVtp(rvd->GetOutputPort(0), "_rvd") && ok;
+  ok = writeVtp(voronoi->GetOutputPort(), "_initial_mat") && ok;
+  vtkNew<vtkMedialAxisWriter> maWriter;
+  maWriter->SetInputConnection(voronoi->GetOutputPort());
+  const std::string maPath = outputDir + "/" + stem + "_initial_mat.ma";
+  maWriter->SetFileName(maPath.c_str());
+  ok = maWriter->Write() == 1 && ok;
+  std::cout << "wrote " << maPath << "\n";
+  return ok ? 0 : 4;
 }

@@ -156,6 +156,12 @@ public:
     return std::sqrt(this->TreePtr->squared_distance(ToKernel(p)));
   }
 
+  /// True when the segment from a to b crosses or touches the surface.
+  bool Crosses(const Point3& a, const Point3& b) const
+  {
+    return this->TreePtr->do_intersect(K::Segment_3(ToKernel(a), ToKernel(b)));
+  }
+
   Index NearestTriangle(const Point3& p) const
   {
     return static_cast<Index>(this->TreePtr->closest_point_and_primitive(ToKernel(p)).second.idx());
@@ -292,10 +298,20 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
         }
       });
   }
+  // Each site's normal, and whether it lies strictly inside its triangle.
   std::vector<Point3> normal(sites.size());
+  std::vector<char> interiorSite(sites.size());
   for (std::size_t i = 0; i < sites.size(); ++i)
   {
-    normal[i] = TriangleNormal(surface, siteTriangle[i]);
+    const Triangle& t = surface.Triangles[siteTriangle[i]];
+    const Point3 &a = surface.Points[t[0]], &b = surface.Points[t[1]], &c = surface.Points[t[2]];
+    const Point3 n = Cross(b - a, c - a);
+    const double area2 = Dot(n, n);
+    const double w0 = Dot(Cross(c - b, sites[i] - b), n) / area2;
+    const double w1 = Dot(Cross(a - c, sites[i] - c), n) / area2;
+    const double w2 = Dot(Cross(b - a, sites[i] - a), n) / area2;
+    normal[i] = Normalized(n);
+    interiorSite[i] = std::min({ w0, w1, w2 }) > 1e-9 && area2 > 0.0 ? 1 : 0;
   }
   // A circumcentre clearly in front of the tangent planes of its four sites
   // is outside, and a large ball clearly behind them is inside. Every other
@@ -340,8 +356,32 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
           inside[c] = 1;
           continue;
         }
+        // Walk from the site whose tangent plane is the least grazing
+        // towards the circumcentre: if the open segment meets no triangle,
+        // the circumcentre is on the same side as the site's own triangle
+        // says. (Sites on a triangle's boundary are left to the exact test.)
+        int best = 0;
+        double bestCosine = 0.0;
+        for (int k = 0; k < 4; ++k)
+        {
+          const Index s = cellSites[c][k];
+          const Point3 d = centre[c] - sites[s];
+          const double cosine = Dot(d, normal[s]) / Norm(d);
+          if (std::fabs(cosine) > std::fabs(bestCosine))
+          {
+            bestCosine = cosine;
+            best = k;
+          }
+        }
+        const Index s = cellSites[c][best];
+        if (std::fabs(bestCosine) > clearCosine && interiorSite[s] &&
+          !queries.Crosses(centre[c], sites[s] + 1e-6 * (centre[c] - sites[s])))
+        {
+          inside[c] = bestCosine < 0.0 ? 1 : 0;
+          continue;
+        }
         ambiguous[c] = 1;
-        inside[c] = queries.InsideByPseudoNormal(centre[c], sites[s0], siteTriangle[s0]) ? 1 : 0;
+        inside[c] = queries.InsideByPseudoNormal(centre[c], sites[s], siteTriangle[s]) ? 1 : 0;
       }
     });
   for (char a : ambiguous)

@@ -44,7 +44,7 @@ struct VoronoiMedialAxisResult
   // What happened, for reports and tests.
   std::size_t DelaunayCells = 0;
   std::size_t InsideCells = 0;
-  std::size_t AmbiguousInsideTests = 0; // decided by the exact test, not by normals
+  std::size_t AmbiguousInsideTests = 0; // needed the closest-point test (see the .cxx)
   std::size_t WeldedCells = 0;          // cells merged into another's vertex
   std::size_t FilteredFaces = 0;        // triangles removed by Eq. 4 (by collapses)
   std::size_t DroppedPockets = 0;       // tiny disconnected pieces removed

@@ -72,4 +72,15 @@ check(abs(total / surface.GetFieldData().GetArray("Area").GetValue(0) - 1) < 1e-
 # The fillets are smooth (each facet turns by under 12 degrees): no sharp edges.
 check(sites.GetPointData().GetArray("ConvexFeature").GetRange() == (0, 0),
       "sharp edges reported on a filleted box")
+# The initial medial mesh from the restricted Voronoi diagram's sites.
+voronoi = VoronoiMedialAxis(Input=shape, Sites=OutputPort(rvd, 1))
+voronoi.UpdatePipeline()
+mat = servermanager.Fetch(voronoi)
+check(mat.GetNumberOfPolys() > 0, "empty initial medial mesh")
+check(mat.GetPointData().GetArray("Radius") is not None, "medial mesh lacks Radius")
+check(mat.GetFieldData().GetArray("AtlasSites") is not None, "medial mesh lacks its Atlas")
+with tempfile.TemporaryDirectory() as tmp:
+    SaveData(os.path.join(tmp, "initial.ma"), proxy=voronoi)
+    back = servermanager.Fetch(MedialAxisReader(FileName=os.path.join(tmp, "initial.ma")))
+    check(back.GetNumberOfPoints() == mat.GetNumberOfPoints(), "initial MAT did not survive .ma")
 print("pvbatch plugin test passed")

@@ -139,6 +139,35 @@ class PipelineTest(unittest.TestCase):
         b = again.GetOutput().GetPoints().GetData()
         self.assertTrue(all(a.GetTuple3(i) == b.GetTuple3(i) for i in range(1500)))
 
+    def test_voronoi_medial_axis_of_a_torus(self):
+        shape = medialaxis.vtkAnalyticShapeSource()
+        shape.SetShapeToTorus()
+        shape.SetResolution(24)
+        sampler = medialaxis.vtkBlueNoiseSurfaceSampler()
+        sampler.SetInputConnection(shape.GetOutputPort())
+        sampler.SetNumberOfSamples(3000)
+        rvd = medialaxis.vtkRestrictedVoronoiDiagram()
+        rvd.SetInputConnection(0, shape.GetOutputPort())
+        rvd.SetInputConnection(1, sampler.GetOutputPort())
+        voronoi = medialaxis.vtkVoronoiMedialAxis()
+        voronoi.SetInputConnection(0, shape.GetOutputPort())
+        voronoi.SetInputConnection(1, rvd.GetOutputPort(1))
+        voronoi.Update()
+        mat = voronoi.GetOutput()
+        self.assertGreater(mat.GetNumberOfPolys(), 1000)
+        # Large balls of a torus (R = 2, r = 0.5) sit near the centre circle.
+        radius = mat.GetPointData().GetArray("Radius")
+        points = mat.GetPoints()
+        for i in range(mat.GetNumberOfPoints()):
+            if radius.GetValue(i) > 0.4:
+                x, y, z = points.GetPoint(i)
+                ring = ((x * x + y * y) ** 0.5 - 2.0) ** 2 + z * z
+                self.assertLess(abs(ring ** 0.5 + radius.GetValue(i) - 0.5), 0.02)
+        writer = medialaxis.vtkMedialAxisWriter()
+        writer.SetInputConnection(voronoi.GetOutputPort())
+        writer.SetFileName(self.path("torus.ma"))
+        self.assertEqual(writer.Write(), 1)
+
     def test_open_surface_is_refused(self):
         sphere = vtk.vtkSphereSource()
         clip = vtk.vtkClipPolyData()  # cut a hole: the surface is open

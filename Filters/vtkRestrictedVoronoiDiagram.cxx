@@ -8,6 +8,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -112,6 +113,29 @@ int vtkRestrictedVoronoiDiagram::RequestData(
   rvdOut->GetCellData()->AddArray(siteIds);
   rvdOut->GetCellData()->SetActiveScalars("SiteId");
   rvdOut->GetCellData()->AddArray(triangleIds);
+
+  // The per-site values the simplifier needs travel with the polygons too,
+  // as field data, so that the RVD alone describes every cell.
+  {
+    vtkNew<vtkDoubleArray> positions;
+    positions->SetName("SitePositions");
+    positions->SetNumberOfComponents(3);
+    positions->SetNumberOfTuples(ns);
+    vtkNew<vtkUnsignedCharArray> convexSites, concaveSites;
+    convexSites->SetName("SiteConvexFeature");
+    convexSites->SetNumberOfTuples(ns);
+    concaveSites->SetName("SiteConcaveFeature");
+    concaveSites->SetNumberOfTuples(ns);
+    for (vtkIdType i = 0; i < ns; ++i)
+    {
+      positions->SetTypedTuple(i, sites[i].data());
+      convexSites->SetValue(i, rvd.ConvexFeature[i]);
+      concaveSites->SetValue(i, rvd.ConcaveFeature[i]);
+    }
+    rvdOut->GetFieldData()->AddArray(positions);
+    rvdOut->GetFieldData()->AddArray(convexSites);
+    rvdOut->GetFieldData()->AddArray(concaveSites);
+  }
 
   // Port 1: the sites with per-cell values.
   sitesOut->SetPoints(sitesIn->GetPoints());

@@ -10,7 +10,9 @@
  * the intersection of one surface triangle with one site's Euclidean 3D
  * Voronoi cell, computed by exact clipping with bisector planes; cell data
  * `SiteId` and `TriangleId`. A site's restricted cell can have several
- * disconnected pieces (both sides of a thin wall): all are found.
+ * disconnected pieces (both sides of a thin wall): all are found. Its field
+ * data repeats the per-site values later stages need: `SitePositions`,
+ * `SiteConvexFeature` and `SiteConcaveFeature`.
  *
  * Output port 1, the sites with their point data plus, per site:
  * `CellArea` (area of its restricted cell), `CellCentroid`,

@@ -83,4 +83,12 @@ with tempfile.TemporaryDirectory() as tmp:
     SaveData(os.path.join(tmp, "initial.ma"), proxy=voronoi)
     back = servermanager.Fetch(MedialAxisReader(FileName=os.path.join(tmp, "initial.ma")))
     check(back.GetNumberOfPoints() == mat.GetNumberOfPoints(), "initial MAT did not survive .ma")
+# Atlas-guided simplification with its correspondence output.
+simplified = AtlasMedialAxisSimplifier(Input=voronoi, RestrictedVoronoiDiagram=OutputPort(rvd, 0),
+                                       TargetNumberOfVertices=100, PreserveSharpFeatures=0)
+simplified.UpdatePipeline()
+small = servermanager.Fetch(simplified, idx=0)
+check(small.GetNumberOfPoints() == 100, "expected 100 spheres, got %d" % small.GetNumberOfPoints())
+colored = servermanager.Fetch(simplified, idx=1)
+check(colored.GetCellData().GetArray("MedialVertexId") is not None, "no correspondence output")
 print("pvbatch plugin test passed")

@@ -1,0 +1,898 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "AtlasSimplifier.h"
+
+#include "SphereQuadric.h"
+#include "Vec3.h"
+
+#include <Eigen/Dense>
+#include <LBFGS.h>
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+namespace medialaxis
+{
+namespace
+{
+using Sphere = std::array<double, 4>; // centre and radius
+
+// Cost of a collapse and where it puts the merged sphere.
+struct Placement
+{
+  double Energy = HUGE_VAL;
+  Sphere Target{};
+};
+
+// The model is scaled into the unit box so that lambda, tau and costs mean
+// the same for every input; results are mapped back at the end.
+struct Normalisation
+{
+  Point3 Origin{ 0, 0, 0 };
+  double Scale = 1.0;
+  Point3 To(const Point3& p) const { return this->Scale * (p - this->Origin); }
+  Point3 From(const Point3& p) const { return (1.0 / this->Scale) * p + this->Origin; }
+};
+
+// Nonlinear fidelity of Eq. 11 plus the quadratic part, for L-BFGS.
+struct InvaginatedEnergy
+{
+  const SphereQuadric* Quadratic;
+  const std::vector<std::pair<Point3, double>>* Anchors; // site, cell area
+
+  double operator()(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const
+  {
+    const Sphere s{ x[0], x[1], x[2], x[3] };
+    double energy = this->Quadratic->Evaluate(s);
+    for (int i = 0; i < 4; ++i)
+    {
+      double row = 0.0;
+      for (int j = 0; j < 4; ++j)
+      {
+        row += this->Quadratic->A[4 * i + j] * s[j];
+      }
+      gradient[i] = 2.0 * row - 2.0 * this->Quadratic->B[i];
+    }
+    for (const auto& [site, area] : *this->Anchors)
+    {
+      const Point3 d = Point3{ s[0], s[1], s[2] } - site;
+      const double length = std::max(Norm(d), 1e-300);
+      const double residual = length - s[3];
+      energy += area * residual * residual;
+      for (int k = 0; k < 3; ++k)
+      {
+        gradient[k] += 2.0 * area * residual * d[k] / length;
+      }
+      gradient[3] -= 2.0 * area * residual;
+    }
+    return energy;
+  }
+};
+
+class Simplifier
+{
+public:
+  Simplifier(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
+    const std::vector<Point3>& sites, const AtlasSimplifierOptions& options)
+    : Options(options)
+  {
+    this->Setup(input, rvd, sites);
+  }
+
+  AtlasSimplifierResult Run();
+
+private:
+  void Setup(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
+    const std::vector<Point3>& sites);
+  Placement Evaluate(Index a, Index b);
+  Placement Solve(const SphereQuadric& q, const std::vector<std::pair<Point3, double>>& anchors,
+    Index a, Index b);
+  double Spike(Index a, Index b) const;
+  double Weight(double spike) const;
+  bool Collapse(Index a, Index b, const Sphere& target);
+  bool CollapseAtFallback(Index a, Index b);
+  bool LinkConditionHolds(Index a, Index b) const;
+  void Snap(Index v);
+  void UpdateFeature(Index v);
+  void Push(Index a, Index b);
+  AtlasMedialMesh Output() const;
+
+  const AtlasSimplifierOptions& Options;
+  Normalisation Frame;
+  // Per site.
+  std::vector<SphereQuadric> CellQuadric;
+  std::vector<double> CellArea;
+  std::vector<Point3> Site;
+  std::vector<std::uint8_t> Convex, Invaginated;
+  // Per vertex.
+  std::vector<Sphere> Spheres;
+  std::vector<std::vector<Index>> Atlas;
+  std::vector<SphereQuadric> AtlasQuadric; // regular cells of the Atlas, each once
+  std::vector<std::vector<Index>> Neighbours; // sorted
+  std::vector<std::vector<Index>> VertexFaces;
+  std::vector<std::uint32_t> Version;
+  std::vector<char> Alive;
+  std::vector<char> Feature;
+  std::size_t AliveCount = 0;
+  // Faces.
+  std::vector<std::array<Index, 3>> Faces;
+  std::vector<char> FaceAlive;
+
+  struct Candidate
+  {
+    double Cost;
+    Index A, B;
+    std::uint32_t VersionA, VersionB;
+    Sphere Target;
+    bool operator<(const Candidate& o) const // for a min-queue, deterministic ties
+    {
+      if (this->Cost != o.Cost)
+      {
+        return this->Cost > o.Cost;
+      }
+      return this->A != o.A ? this->A > o.A : this->B > o.B;
+    }
+  };
+  std::priority_queue<Candidate> Queue;
+  std::vector<Index> Scratch;
+  std::size_t Rejected = 0, Collapses = 0, Snapped = 0;
+};
+
+void Simplifier::Setup(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
+  const std::vector<Point3>& sites)
+{
+  // Normalisation from the sites' bounding box (the surface's extent).
+  Point3 lo = sites.empty() ? Point3{ 0, 0, 0 } : sites[0], hi = lo;
+  for (const Point3& p : sites)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+  this->Frame.Origin = lo;
+  this->Frame.Scale = extent > 0.0 ? 1.0 / extent : 1.0;
+
+  // Per-cell quadrics from the RVD polygons (normal and area by Newell's
+  // formula: every polygon is planar, a piece of one surface triangle).
+  const std::size_t ns = sites.size();
+  this->Site.resize(ns);
+  for (std::size_t i = 0; i < ns; ++i)
+  {
+    this->Site[i] = this->Frame.To(sites[i]);
+  }
+  this->CellQuadric.assign(ns, SphereQuadric());
+  this->CellArea.assign(ns, 0.0);
+  for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)
+  {
+    const Index site = rvd.PolygonSite[p];
+    if (site < 0 || static_cast<std::size_t>(site) >= ns)
+    {
+      continue;
+    }
+    Point3 twiceNormal{ 0, 0, 0 };
+    const Index first = rvd.Offsets[p], count = rvd.Offsets[p + 1] - first;
+    const Point3 anchor = this->Frame.To(rvd.Vertices[first]);
+    for (Index k = 1; k + 1 < count; ++k)
+    {
+      twiceNormal = twiceNormal +
+        Cross(this->Frame.To(rvd.Vertices[first + k]) - anchor,
+          this->Frame.To(rvd.Vertices[first + k + 1]) - anchor);
+    }
+    const double area = 0.5 * Norm(twiceNormal);
+    if (!(area > 0.0))
+    {
+      continue;
+    }
+    const Point3 n = Normalized(twiceNormal);
+    this->CellQuadric[site].AddFacet(n, Dot(n, anchor), area);
+    this->CellArea[site] += area;
+  }
+  this->Convex.assign(ns, 0);
+  this->Invaginated.assign(ns, 0);
+  if (rvd.ConvexFeature.size() == ns)
+  {
+    this->Convex = rvd.ConvexFeature;
+  }
+  if (rvd.ConcaveFeature.size() == ns && this->Options.InvaginatedTerm)
+  {
+    this->Invaginated = rvd.ConcaveFeature;
+  }
+
+  // Vertices, Atlases and their quadrics.
+  const MedialMesh& mesh = input.Mesh;
+  const std::size_t nv = mesh.Centers.size();
+  this->Spheres.resize(nv);
+  this->Atlas.resize(nv);
+  this->AtlasQuadric.assign(nv, SphereQuadric());
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    const Point3 c = this->Frame.To(mesh.Centers[v]);
+    this->Spheres[v] = { c[0], c[1], c[2], mesh.Radii[v] * this->Frame.Scale };
+    for (Index k = input.AtlasOffsets[v]; k < input.AtlasOffsets[v + 1]; ++k)
+    {
+      const Index s = input.AtlasSites[k];
+      if (s >= 0 && static_cast<std::size_t>(s) < ns)
+      {
+        this->Atlas[v].push_back(s);
+      }
+    }
+    std::sort(this->Atlas[v].begin(), this->Atlas[v].end());
+    this->Atlas[v].erase(std::unique(this->Atlas[v].begin(), this->Atlas[v].end()), this->Atlas[v].end());
+    for (Index s : this->Atlas[v])
+    {
+      if (!this->Invaginated[s])
+      {
+        this->AtlasQuadric[v] += this->CellQuadric[s];
+      }
+    }
+  }
+
+  // Connectivity.
+  this->Neighbours.assign(nv, {});
+  this->VertexFaces.assign(nv, {});
+  auto link = [this](Index a, Index b) {
+    this->Neighbours[a].push_back(b);
+    this->Neighbours[b].push_back(a);
+  };
+  for (const auto& e : mesh.Edges)
+  {
+    link(e[0], e[1]);
+  }
+  this->Faces = mesh.Faces;
+  this->FaceAlive.assign(this->Faces.size(), 1);
+  for (std::size_t f = 0; f < this->Faces.size(); ++f)
+  {
+    const auto& t = this->Faces[f];
+    link(t[0], t[1]);
+    link(t[1], t[2]);
+    link(t[2], t[0]);
+    for (Index v : t)
+    {
+      this->VertexFaces[v].push_back(static_cast<Index>(f));
+    }
+  }
+  for (auto& n : this->Neighbours)
+  {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  this->Version.assign(nv, 0);
+  this->Alive.assign(nv, 1);
+  this->AliveCount = nv;
+  this->Feature.assign(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    this->UpdateFeature(static_cast<Index>(v));
+  }
+}
+
+// A feature vertex's Atlas touches a sharp convex edge and no concave one.
+void Simplifier::UpdateFeature(Index v)
+{
+  if (!this->Options.PreserveSharpFeatures)
+  {
+    this->Feature[v] = 0;
+    return;
+  }
+  bool convex = false, concave = false;
+  for (Index s : this->Atlas[v])
+  {
+    convex = convex || this->Convex[s];
+    concave = concave || this->Invaginated[s];
+  }
+  this->Feature[v] = convex && !concave ? 1 : 0;
+}
+
+double Simplifier::Spike(Index a, Index b) const
+{
+  const Sphere &p = this->Spheres[a], &q = this->Spheres[b];
+  const double d = Norm(Point3{ p[0] - q[0], p[1] - q[1], p[2] - q[2] });
+  if (!(d > 0.0))
+  {
+    return 0.0;
+  }
+  return std::max(0.0, d - std::fabs(p[3] - q[3])) / d;
+}
+
+double Simplifier::Weight(double spike) const
+{
+  return 1.0 / (1.0 + std::exp(-this->Options.SpikeSharpness * (spike - this->Options.SpikeThreshold)));
+}
+
+Placement Simplifier::Solve(const SphereQuadric& q,
+  const std::vector<std::pair<Point3, double>>& anchors, Index a, Index b)
+{
+  const Sphere& pa = this->Spheres[a];
+  const Sphere& pb = this->Spheres[b];
+  const Sphere mid{ 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]),
+    0.5 * (pa[3] + pb[3]) };
+  auto energyAt = [&](const Sphere& x) {
+    double e = q.Evaluate(x);
+    for (const auto& [site, area] : anchors)
+    {
+      const double r = Norm(Point3{ x[0], x[1], x[2] } - site) - x[3];
+      e += area * r * r;
+    }
+    return e;
+  };
+  Placement best;
+  auto consider = [&](const Sphere& x) {
+    if (x[3] < 0.0)
+    {
+      return;
+    }
+    const double e = energyAt(x);
+    if (e < best.Energy)
+    {
+      best.Energy = e;
+      best.Target = x;
+    }
+  };
+
+  const bool aFeature = this->Feature[a], bFeature = this->Feature[b];
+  if (this->Options.PreserveSharpFeatures && (aFeature || bFeature) && anchors.empty())
+  {
+    // Eq. 18: discrete candidates with zero radius.
+    auto atZero = [](const Sphere& s) { return Sphere{ s[0], s[1], s[2], 0.0 }; };
+    if (aFeature && !bFeature)
+    {
+      consider(atZero(pa));
+    }
+    else if (bFeature && !aFeature)
+    {
+      consider(atZero(pb));
+    }
+    else
+    {
+      consider(atZero(pa));
+      consider(atZero(pb));
+      consider(atZero(mid));
+    }
+    return best;
+  }
+
+  if (anchors.empty())
+  {
+    // Closed form: A x = B (4 x 4), guarded against singular systems.
+    Eigen::Matrix4d A;
+    Eigen::Vector4d B;
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        A(i, j) = q.A[4 * i + j];
+      }
+      B[i] = q.B[i];
+    }
+    const Eigen::FullPivLU<Eigen::Matrix4d> lu(A);
+    if (lu.rank() == 4 && lu.rcond() > 1e-12)
+    {
+      const Eigen::Vector4d x = lu.solve(B);
+      Sphere s{ x[0], x[1], x[2], x[3] };
+      if (s[3] < 0.0)
+      {
+        // Best centre with r = 0: the 3 x 3 system of the first rows.
+        const Eigen::FullPivLU<Eigen::Matrix3d> lu3(A.topLeftCorner<3, 3>());
+        if (lu3.rank() == 3)
+        {
+          const Eigen::Vector3d y = lu3.solve(B.head<3>());
+          s = { y[0], y[1], y[2], 0.0 };
+        }
+      }
+      if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]) && std::isfinite(s[3]))
+      {
+        consider(s);
+      }
+    }
+  }
+  else
+  {
+    // Eq. 11 is nonlinear: L-BFGS from the midpoint, radius = distance to
+    // the nearest Atlas site (paper section 4.2).
+    Eigen::VectorXd x(4);
+    x << mid[0], mid[1], mid[2], HUGE_VAL;
+    for (const auto& [site, area] : anchors)
+    {
+      x[3] = std::min(x[3], Norm(Point3{ mid[0], mid[1], mid[2] } - site));
+    }
+    InvaginatedEnergy f{ &q, &anchors };
+    LBFGSpp::LBFGSParam<double> param;
+    param.epsilon = 1e-10;
+    param.max_iterations = 50;
+    LBFGSpp::LBFGSSolver<double> solver(param);
+    double fx = 0.0;
+    try
+    {
+      solver.minimize(f, x, fx);
+    }
+    catch (const std::exception&)
+    {
+      // Line search trouble: keep the best point reached.
+    }
+    if (x.allFinite())
+    {
+      consider({ x[0], x[1], x[2], std::max(0.0, x[3]) });
+    }
+  }
+  if (!(best.Energy < HUGE_VAL))
+  {
+    // Singular or failed: the best of the endpoints and the midpoint.
+    consider(pa);
+    consider(pb);
+    consider(mid);
+  }
+  return best;
+}
+
+Placement Simplifier::Evaluate(Index a, Index b)
+{
+  // Union of the Atlases, each cell once: Q(A u B) = Q(A) + Q(B) - Q(A n B).
+  SphereQuadric q = this->AtlasQuadric[a];
+  q += this->AtlasQuadric[b];
+  std::vector<std::pair<Point3, double>> anchors;
+  const auto& A = this->Atlas[a];
+  const auto& B = this->Atlas[b];
+  std::size_t i = 0, j = 0;
+  while (i < A.size() || j < B.size())
+  {
+    Index s;
+    bool shared = false;
+    if (j == B.size() || (i < A.size() && A[i] < B[j]))
+    {
+      s = A[i++];
+    }
+    else if (i == A.size() || B[j] < A[i])
+    {
+      s = B[j++];
+    }
+    else
+    {
+      s = A[i];
+      ++i;
+      ++j;
+      shared = true;
+    }
+    if (this->Invaginated[s])
+    {
+      anchors.emplace_back(this->Site[s], this->CellArea[s]);
+    }
+    else if (shared)
+    {
+      q -= this->CellQuadric[s];
+    }
+  }
+  // Uniform Laplacian over the merged one-ring (Eq. 12).
+  Point3 sum{ 0, 0, 0 };
+  double sumSquares = 0.0;
+  std::size_t count = 0;
+  for (Index v : { a, b })
+  {
+    for (Index u : this->Neighbours[v])
+    {
+      if (u == a || u == b)
+      {
+        continue;
+      }
+      // Shared neighbours count once.
+      if (v == b && std::binary_search(this->Neighbours[a].begin(), this->Neighbours[a].end(), u))
+      {
+        continue;
+      }
+      const Point3 p{ this->Spheres[u][0], this->Spheres[u][1], this->Spheres[u][2] };
+      sum = sum + p;
+      sumSquares += Dot(p, p);
+      ++count;
+    }
+  }
+  if (count > 0)
+  {
+    const double w = this->Options.Lambda / static_cast<double>(count);
+    for (int k = 0; k < 3; ++k)
+    {
+      q.A[4 * k + k] += this->Options.Lambda;
+      q.B[k] += w * sum[k];
+    }
+    q.C += w * sumSquares;
+  }
+  return this->Solve(q, anchors, a, b);
+}
+
+void Simplifier::Push(Index a, Index b)
+{
+  if (a > b)
+  {
+    std::swap(a, b);
+  }
+  const Placement p = this->Evaluate(a, b);
+  if (!(p.Energy < HUGE_VAL))
+  {
+    return;
+  }
+  const double cost = std::max(0.0, p.Energy) * this->Weight(this->Spike(a, b));
+  this->Queue.push({ cost, a, b, this->Version[a], this->Version[b], p.Target });
+}
+
+bool Simplifier::LinkConditionHolds(Index a, Index b) const
+{
+  // Common neighbours of a and b must be exactly the apices of faces (a, b, x).
+  std::vector<Index> common;
+  std::set_intersection(this->Neighbours[a].begin(), this->Neighbours[a].end(),
+    this->Neighbours[b].begin(), this->Neighbours[b].end(), std::back_inserter(common));
+  for (Index x : common)
+  {
+    bool apex = false;
+    for (Index f : this->VertexFaces[a])
+    {
+      const auto& t = this->Faces[f];
+      if (this->FaceAlive[f] && (t[0] == b || t[1] == b || t[2] == b) &&
+        (t[0] == x || t[1] == x || t[2] == x))
+      {
+        apex = true;
+        break;
+      }
+    }
+    if (!apex)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Merges b into a at `target` if the result stays a valid medial mesh.
+bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
+{
+  const Point3 newPosition{ target[0], target[1], target[2] };
+  auto position = [this](Index v) {
+    return Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
+  };
+  if (this->AliveCount <= this->Options.TopologyGuardVertexCount && !this->LinkConditionHolds(a, b))
+  {
+    return false;
+  }
+  // Faces that survive: no zero area and no flip (for faces that had a
+  // well-defined normal). Two faces that become one are merged. With the
+  // vertex part of the link condition holding, that only happens when
+  // (a, b, x, y) bound a tetrahedral bubble, which the merge removes: the
+  // edge part of Dey's link condition is relaxed on purpose, since a bubble
+  // in the medial axis of a solid without cavities is always spurious.
+  std::vector<std::pair<std::array<Index, 3>, Index>> keys;
+  for (Index v : { a, b })
+  {
+    for (Index f : this->VertexFaces[v])
+    {
+      if (!this->FaceAlive[f])
+      {
+        continue;
+      }
+      const auto& t = this->Faces[f];
+      const bool hasA = t[0] == a || t[1] == a || t[2] == a;
+      const bool hasB = t[0] == b || t[1] == b || t[2] == b;
+      if (hasA && hasB)
+      {
+        continue; // vanishes with the edge
+      }
+      if (v == b && hasA)
+      {
+        continue; // seen from a
+      }
+      std::array<Index, 3> after = t;
+      Point3 before[3], moved[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        before[k] = position(t[k]);
+        moved[k] = (t[k] == a || t[k] == b) ? newPosition : before[k];
+        if (after[k] == b)
+        {
+          after[k] = a;
+        }
+      }
+      const Point3 n0 = Cross(before[1] - before[0], before[2] - before[0]);
+      const Point3 n1 = Cross(moved[1] - moved[0], moved[2] - moved[0]);
+      const double l0 = std::max(
+        { Distance2(before[0], before[1]), Distance2(before[1], before[2]), Distance2(before[2], before[0]) });
+      const double l1 = std::max(
+        { Distance2(moved[0], moved[1]), Distance2(moved[1], moved[2]), Distance2(moved[2], moved[0]) });
+      if (!(Norm(n1) > 1e-10 * l1))
+      {
+        return false; // would be degenerate
+      }
+      if (Norm(n0) > 1e-6 * l0 && Dot(n0, n1) <= 0.0)
+      {
+        return false; // would flip
+      }
+      std::sort(after.begin(), after.end());
+      keys.emplace_back(after, f);
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<Index> mergedAway;
+  for (std::size_t i = 1; i < keys.size(); ++i)
+  {
+    if (keys[i].first == keys[i - 1].first)
+    {
+      mergedAway.push_back(keys[i].second);
+    }
+  }
+
+  // Apply.
+  for (Index f : mergedAway)
+  {
+    this->FaceAlive[f] = 0;
+  }
+  for (Index f : this->VertexFaces[b])
+  {
+    if (!this->FaceAlive[f])
+    {
+      continue;
+    }
+    auto& t = this->Faces[f];
+    if (t[0] == a || t[1] == a || t[2] == a)
+    {
+      this->FaceAlive[f] = 0;
+      continue;
+    }
+    for (Index& v : t)
+    {
+      v = v == b ? a : v;
+    }
+    this->VertexFaces[a].push_back(f);
+  }
+  auto& faces = this->VertexFaces[a];
+  faces.erase(std::remove_if(faces.begin(), faces.end(), [this](Index f) { return !this->FaceAlive[f]; }),
+    faces.end());
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  for (Index u : this->Neighbours[b])
+  {
+    auto& n = this->Neighbours[u];
+    n.erase(std::lower_bound(n.begin(), n.end(), b));
+    if (u != a)
+    {
+      n.insert(std::lower_bound(n.begin(), n.end(), a), a);
+      n.erase(std::unique(n.begin(), n.end()), n.end());
+    }
+  }
+  std::vector<Index> merged;
+  std::set_union(this->Neighbours[a].begin(), this->Neighbours[a].end(),
+    this->Neighbours[b].begin(), this->Neighbours[b].end(), std::back_inserter(merged));
+  merged.erase(std::remove_if(merged.begin(), merged.end(), [a, b](Index u) { return u == a || u == b; }),
+    merged.end());
+  this->Neighbours[a] = std::move(merged);
+  std::vector<Index>().swap(this->Neighbours[b]);
+  std::vector<Index>().swap(this->VertexFaces[b]);
+
+  // Atlas and its quadric.
+  std::vector<Index> atlas;
+  std::set_union(this->Atlas[a].begin(), this->Atlas[a].end(), this->Atlas[b].begin(),
+    this->Atlas[b].end(), std::back_inserter(atlas));
+  this->Atlas[a] = std::move(atlas);
+  std::vector<Index>().swap(this->Atlas[b]);
+  this->AtlasQuadric[a] = SphereQuadric();
+  for (Index s : this->Atlas[a])
+  {
+    if (!this->Invaginated[s])
+    {
+      this->AtlasQuadric[a] += this->CellQuadric[s];
+    }
+  }
+  this->Spheres[a] = target;
+  this->Alive[b] = 0;
+  --this->AliveCount;
+  ++this->Version[a];
+  ++this->Version[b];
+  this->UpdateFeature(a);
+  return true;
+}
+
+// When the optimal sphere would break validity: the endpoints and the
+// midpoint, cheapest first, with each one's own radius (0 for feature ones).
+bool Simplifier::CollapseAtFallback(Index a, Index b)
+{
+  const Sphere pa = this->Spheres[a], pb = this->Spheres[b];
+  Sphere candidates[3] = { pa, pb,
+    { 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]), 0.5 * (pa[3] + pb[3]) } };
+  if (this->Feature[a] && !this->Feature[b])
+  {
+    candidates[1] = candidates[2] = pa;
+  }
+  else if (this->Feature[b] && !this->Feature[a])
+  {
+    candidates[0] = candidates[2] = pb;
+  }
+  // Cheapest by the fidelity of the merged Atlas.
+  SphereQuadric q = this->AtlasQuadric[a];
+  q += this->AtlasQuadric[b];
+  std::array<int, 3> order{ 0, 1, 2 };
+  double energy[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    energy[k] = q.Evaluate(candidates[k]);
+  }
+  std::sort(order.begin(), order.end(), [&energy](int x, int y) {
+    return energy[x] != energy[y] ? energy[x] < energy[y] : x < y;
+  });
+  for (int k : order)
+  {
+    if (this->Collapse(a, b, candidates[k]))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Eq. 17: a feature vertex moves onto its sharp edge with r = 0.
+void Simplifier::Snap(Index v)
+{
+  SphereQuadric q = this->AtlasQuadric[v];
+  Point3 sum{ 0, 0, 0 };
+  double sumSquares = 0.0;
+  for (Index u : this->Neighbours[v])
+  {
+    const Point3 p{ this->Spheres[u][0], this->Spheres[u][1], this->Spheres[u][2] };
+    sum = sum + p;
+    sumSquares += Dot(p, p);
+  }
+  Eigen::Matrix3d A;
+  Eigen::Vector3d B;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      A(i, j) = q.A[4 * i + j];
+    }
+    B[i] = q.B[i];
+  }
+  if (!this->Neighbours[v].empty())
+  {
+    const double w = this->Options.Lambda / static_cast<double>(this->Neighbours[v].size());
+    A += this->Options.Lambda * Eigen::Matrix3d::Identity();
+    B += w * Eigen::Vector3d(sum[0], sum[1], sum[2]);
+  }
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(A);
+  if (lu.rank() < 3 || !(lu.rcond() > 1e-12))
+  {
+    return;
+  }
+  const Eigen::Vector3d x = lu.solve(B);
+  if (!x.allFinite())
+  {
+    return;
+  }
+  this->Spheres[v] = { x[0], x[1], x[2], 0.0 };
+  ++this->Snapped;
+}
+
+AtlasSimplifierResult Simplifier::Run()
+{
+  AtlasSimplifierResult result;
+  const std::size_t nv = this->Spheres.size();
+  auto report = [this](double f) { return !this->Options.Progress || this->Options.Progress(f); };
+
+  if (this->Options.PreserveSharpFeatures)
+  {
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      if (this->Feature[v])
+      {
+        this->Snap(static_cast<Index>(v));
+      }
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    for (Index u : this->Neighbours[v])
+    {
+      if (static_cast<Index>(v) < u)
+      {
+        this->Push(static_cast<Index>(v), u);
+      }
+    }
+  }
+  if (!report(0.1))
+  {
+    result.Aborted = true;
+    return result;
+  }
+
+  const std::size_t target = std::max<std::size_t>(1, this->Options.TargetNumberOfVertices);
+  const std::size_t toRemove = nv > target ? nv - target : 0;
+  std::size_t lastReport = 0;
+  while (this->AliveCount > target && !this->Queue.empty())
+  {
+    const Candidate c = this->Queue.top();
+    this->Queue.pop();
+    if (!this->Alive[c.A] || !this->Alive[c.B] || c.VersionA != this->Version[c.A] ||
+      c.VersionB != this->Version[c.B])
+    {
+      continue; // stale
+    }
+    if (c.Cost > this->Options.MaximumCost)
+    {
+      break;
+    }
+    if (!this->Collapse(c.A, c.B, c.Target) && !this->CollapseAtFallback(c.A, c.B))
+    {
+      ++this->Rejected; // not retried until its neighbourhood changes
+      continue;
+    }
+    ++this->Collapses;
+    for (Index u : this->Neighbours[c.A])
+    {
+      this->Push(c.A, u);
+    }
+    const std::size_t done = nv - this->AliveCount;
+    if (toRemove > 0 && done - lastReport >= std::max<std::size_t>(1, toRemove / 100))
+    {
+      lastReport = done;
+      if (!report(0.1 + 0.85 * static_cast<double>(done) / static_cast<double>(toRemove)))
+      {
+        result.Aborted = true;
+        return result;
+      }
+    }
+  }
+  result.Medial = this->Output();
+  result.Collapses = this->Collapses;
+  result.RejectedCollapses = this->Rejected;
+  result.SnappedVertices = this->Snapped;
+  report(1.0);
+  return result;
+}
+
+AtlasMedialMesh Simplifier::Output() const
+{
+  AtlasMedialMesh out;
+  std::vector<Index> newId(this->Spheres.size(), -1);
+  for (std::size_t v = 0; v < this->Spheres.size(); ++v)
+  {
+    if (!this->Alive[v])
+    {
+      continue;
+    }
+    newId[v] = static_cast<Index>(out.Mesh.Centers.size());
+    const Sphere& s = this->Spheres[v];
+    out.Mesh.Centers.push_back(this->Frame.From({ s[0], s[1], s[2] }));
+    out.Mesh.Radii.push_back(s[3] / this->Frame.Scale);
+    out.AtlasSites.insert(out.AtlasSites.end(), this->Atlas[v].begin(), this->Atlas[v].end());
+    out.AtlasOffsets.push_back(static_cast<Index>(out.AtlasSites.size()));
+    out.FeatureVertex.push_back(this->Feature[v]);
+  }
+  for (std::size_t f = 0; f < this->Faces.size(); ++f)
+  {
+    if (this->FaceAlive[f])
+    {
+      const auto& t = this->Faces[f];
+      out.Mesh.Faces.push_back({ newId[t[0]], newId[t[1]], newId[t[2]] });
+    }
+  }
+  for (std::size_t v = 0; v < this->Spheres.size(); ++v)
+  {
+    if (!this->Alive[v])
+    {
+      continue;
+    }
+    for (Index u : this->Neighbours[v])
+    {
+      if (static_cast<Index>(v) < u)
+      {
+        out.Mesh.Edges.push_back({ newId[v], newId[u] });
+      }
+    }
+  }
+  return out;
+}
+}
+
+AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
+  const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
+  const AtlasSimplifierOptions& options)
+{
+  Simplifier simplifier(input, rvd, sites, options);
+  return simplifier.Run();
+}
+}

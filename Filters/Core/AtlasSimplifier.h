@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Atlas-guided medial mesh simplification by edge collapse (paper
+// "Structural MAT", sections 4.2-4.4): every medial vertex keeps the set of
+// surface cells it stands for (its Atlas); a collapse places the merged
+// sphere by minimising the spherical quadric error over the union of both
+// Atlases (each cell once) plus a uniform Laplacian, and edges are collapsed
+// in order of that error weighted by a spike-stability sigmoid.
+#ifndef medialaxis_AtlasSimplifier_h
+#define medialaxis_AtlasSimplifier_h
+
+#include "MedialMesh.h"
+#include "RestrictedVoronoi.h"
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace medialaxis
+{
+struct AtlasSimplifierOptions
+{
+  std::size_t TargetNumberOfVertices = 1000;
+  /// Stop when the cheapest collapse costs more (in the unit-box model).
+  double MaximumCost = std::numeric_limits<double>::infinity();
+  /// Laplacian weight lambda, stability sharpness k and threshold tau, all
+  /// in the model normalised to the unit box (paper: 6e-6, 100, 0.025).
+  double Lambda = 6e-6;
+  double SpikeSharpness = 100.0;
+  double SpikeThreshold = 0.025;
+  /// Below this many vertices the link condition guards every collapse.
+  std::size_t TopologyGuardVertexCount = 200;
+  /// CAD extension: snap feature vertices to sharp edges (r = 0) and keep
+  /// them there (paper section 4.4).
+  bool PreserveSharpFeatures = true;
+  /// Distance-to-site fidelity for cells on concave edges (Eq. 11, solved by
+  /// L-BFGS); when off they use the plane quadric like every other cell.
+  bool InvaginatedTerm = true;
+  /// Fraction in [0, 1]; returning false aborts (the result is then empty).
+  std::function<bool(double)> Progress;
+};
+
+/// A medial mesh with the Atlas of every vertex: sites
+/// AtlasSites[AtlasOffsets[v] .. AtlasOffsets[v + 1]), sorted.
+struct AtlasMedialMesh
+{
+  MedialMesh Mesh;
+  std::vector<Index> AtlasOffsets{ 0 };
+  std::vector<Index> AtlasSites;
+  std::vector<std::uint8_t> FeatureVertex; // per vertex (output only)
+};
+
+struct AtlasSimplifierResult
+{
+  AtlasMedialMesh Medial;
+  std::size_t Collapses = 0;
+  std::size_t RejectedCollapses = 0; // would have broken validity or topology
+  std::size_t SnappedVertices = 0;   // feature vertices moved onto sharp edges
+  bool Aborted = false;
+};
+
+/// `rvd`: the restricted Voronoi diagram whose sites the Atlases refer to
+/// (its polygons give each cell's quadric, its flags the feature classes);
+/// `sites`: the site positions. Single-threaded and deterministic.
+AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
+  const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
+  const AtlasSimplifierOptions& options = AtlasSimplifierOptions());
+}
+
+#endif

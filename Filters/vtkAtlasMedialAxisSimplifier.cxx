@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vtkAtlasMedialAxisSimplifier.h"
+
+#include "AtlasSimplifier.h"
+#include "vtkMedialMeshConversion.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+
+vtkStandardNewMacro(vtkAtlasMedialAxisSimplifier);
+
+vtkAtlasMedialAxisSimplifier::vtkAtlasMedialAxisSimplifier()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+}
+
+int vtkAtlasMedialAxisSimplifier::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+namespace
+{
+// The RVD polygons and per-site field data as the core expects them.
+std::string ReadRvd(vtkPolyData* input, medialaxis::RestrictedVoronoiDiagram& rvd,
+  std::vector<medialaxis::Point3>& sites)
+{
+  vtkDataArray* positions = input->GetFieldData()->GetArray("SitePositions");
+  vtkDataArray* siteIds = input->GetCellData()->GetArray("SiteId");
+  if (!positions || positions->GetNumberOfComponents() != 3 || !siteIds)
+  {
+    return "input port 1 must be the restricted Voronoi diagram (output 0 of "
+           "vtkRestrictedVoronoiDiagram: cell data 'SiteId', field data 'SitePositions')";
+  }
+  const vtkIdType ns = positions->GetNumberOfTuples();
+  sites.resize(static_cast<std::size_t>(ns));
+  for (vtkIdType i = 0; i < ns; ++i)
+  {
+    positions->GetTuple(i, sites[i].data());
+  }
+  for (const char* name : { "SiteConvexFeature", "SiteConcaveFeature" })
+  {
+    auto& flags = name[4] == 'C' && name[6] == 'n' && name[7] == 'v' ? rvd.ConvexFeature : rvd.ConcaveFeature;
+    if (vtkDataArray* a = input->GetFieldData()->GetArray(name))
+    {
+      if (a->GetNumberOfTuples() == ns)
+      {
+        flags.resize(static_cast<std::size_t>(ns));
+        for (vtkIdType i = 0; i < ns; ++i)
+        {
+          flags[i] = a->GetComponent(i, 0) != 0.0 ? 1 : 0;
+        }
+      }
+    }
+  }
+  // Polygons are the polys after any verts and lines in the cell order.
+  const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  auto it = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  vtkIdType cell = firstPoly;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    const auto site = static_cast<medialaxis::Index>(siteIds->GetComponent(cell, 0));
+    if (site < 0 || site >= ns)
+    {
+      return "RVD polygon " + std::to_string(cell) + " has SiteId " + std::to_string(site) +
+        " outside [0, " + std::to_string(ns) + ")";
+    }
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      medialaxis::Point3 p;
+      input->GetPoint(ids[k], p.data());
+      rvd.Vertices.push_back(p);
+    }
+    rvd.Offsets.push_back(static_cast<medialaxis::Index>(rvd.Vertices.size()));
+    rvd.PolygonSite.push_back(site);
+  }
+  return std::string();
+}
+
+double StabilityRatio(const medialaxis::MedialMesh& m, medialaxis::Index a, medialaxis::Index b)
+{
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    d2 += (m.Centers[a][k] - m.Centers[b][k]) * (m.Centers[a][k] - m.Centers[b][k]);
+  }
+  const double d = std::sqrt(d2);
+  return d > 0.0 ? std::max(0.0, d - std::fabs(m.Radii[a] - m.Radii[b])) / d : 0.0;
+}
+}
+
+int vtkAtlasMedialAxisSimplifier::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* matIn = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* rvdIn = vtkPolyData::GetData(inputVector[1]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* rvdOut = vtkPolyData::GetData(outputVector, 1);
+  output->Initialize();
+  rvdOut->Initialize();
+  if (!rvdIn)
+  {
+    vtkErrorMacro(<< "no restricted Voronoi diagram on input port 1");
+    return 0;
+  }
+
+  medialaxis::AtlasMedialMesh input;
+  std::string problem = medialaxis::PolyDataToMedialMesh(matIn, input.Mesh);
+  if (problem.empty())
+  {
+    problem = medialaxis::GetAtlasArrays(matIn, input.AtlasOffsets, input.AtlasSites);
+  }
+  medialaxis::RestrictedVoronoiDiagram rvd;
+  std::vector<medialaxis::Point3> sites;
+  if (problem.empty())
+  {
+    problem = ReadRvd(rvdIn, rvd, sites);
+  }
+  for (medialaxis::Index s : input.AtlasSites)
+  {
+    if (problem.empty() && (s < 0 || static_cast<std::size_t>(s) >= sites.size()))
+    {
+      problem = "Atlas site " + std::to_string(s) + " is not a site of the restricted Voronoi "
+        "diagram on input port 1 (they must come from the same sampling)";
+    }
+  }
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< "cannot simplify: " << problem);
+    return 0;
+  }
+
+  medialaxis::AtlasSimplifierOptions options;
+  options.TargetNumberOfVertices = static_cast<std::size_t>(this->TargetNumberOfVertices);
+  options.MaximumCost = this->MaximumCost >= VTK_DOUBLE_MAX ? HUGE_VAL : this->MaximumCost;
+  options.Lambda = this->Lambda;
+  options.SpikeThreshold = this->SpikeThreshold;
+  options.SpikeSharpness = this->SpikeSharpness;
+  options.TopologyGuardVertexCount = static_cast<std::size_t>(this->TopologyGuardVertexCount);
+  options.PreserveSharpFeatures = this->PreserveSharpFeatures;
+  options.InvaginatedTerm = this->InvaginatedTerm;
+  options.Progress = [this](double f) {
+    this->UpdateProgress(0.05 + 0.9 * f);
+    return !this->GetAbortExecute();
+  };
+  const medialaxis::AtlasSimplifierResult result =
+    medialaxis::SimplifyMedialAxis(input, rvd, sites, options);
+  if (result.Aborted)
+  {
+    return 1;
+  }
+
+  const medialaxis::AtlasMedialMesh& m = result.Medial;
+  medialaxis::MedialMeshToPolyData(m.Mesh, output);
+  medialaxis::AddAtlasArrays(output, m.AtlasOffsets, m.AtlasSites);
+  vtkNew<vtkUnsignedCharArray> feature;
+  feature->SetName("FeatureVertex");
+  feature->SetNumberOfTuples(static_cast<vtkIdType>(m.FeatureVertex.size()));
+  for (std::size_t v = 0; v < m.FeatureVertex.size(); ++v)
+  {
+    feature->SetValue(static_cast<vtkIdType>(v), m.FeatureVertex[v]);
+  }
+  output->GetPointData()->AddArray(feature);
+
+  // Stability ratio per cell, in the cell order verts, lines, polys.
+  vtkNew<vtkDoubleArray> stability;
+  stability->SetName("StabilityRatio");
+  stability->SetNumberOfTuples(output->GetNumberOfCells());
+  vtkIdType cell = 0;
+  for (vtkIdType i = 0; i < output->GetNumberOfVerts(); ++i)
+  {
+    stability->SetValue(cell++, 1.0);
+  }
+  for (vtkCellArray* cells : { output->GetLines(), output->GetPolys() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      double ratio = 1.0;
+      for (vtkIdType k = 0; k < (n == 2 ? 1 : n); ++k)
+      {
+        ratio = std::min(ratio, StabilityRatio(m.Mesh, ids[k], ids[(k + 1) % n]));
+      }
+      stability->SetValue(cell++, ratio);
+    }
+  }
+  output->GetCellData()->AddArray(stability);
+  for (const auto& [name, value] : { std::pair<const char*, std::size_t>{ "Collapses", result.Collapses },
+         { "RejectedCollapses", result.RejectedCollapses }, { "SnappedVertices", result.SnappedVertices } })
+  {
+    vtkNew<vtkIdTypeArray> a;
+    a->SetName(name);
+    a->InsertNextValue(static_cast<vtkIdType>(value));
+    output->GetFieldData()->AddArray(a);
+  }
+
+  // The RVD, coloured by a medial vertex whose Atlas holds each polygon's site.
+  std::vector<vtkIdType> vertexOfSite(sites.size(), -1);
+  for (std::size_t v = 0; v + 1 < m.AtlasOffsets.size(); ++v)
+  {
+    for (medialaxis::Index k = m.AtlasOffsets[v]; k < m.AtlasOffsets[v + 1]; ++k)
+    {
+      if (vertexOfSite[m.AtlasSites[k]] < 0)
+      {
+        vertexOfSite[m.AtlasSites[k]] = static_cast<vtkIdType>(v);
+      }
+    }
+  }
+  rvdOut->ShallowCopy(rvdIn);
+  vtkDataArray* siteIds = rvdIn->GetCellData()->GetArray("SiteId");
+  vtkNew<vtkIdTypeArray> vertexIds;
+  vertexIds->SetName("MedialVertexId");
+  vertexIds->SetNumberOfTuples(rvdIn->GetNumberOfCells());
+  for (vtkIdType c = 0; c < rvdIn->GetNumberOfCells(); ++c)
+  {
+    const auto site = static_cast<vtkIdType>(siteIds->GetComponent(c, 0));
+    vertexIds->SetValue(c, site >= 0 && site < static_cast<vtkIdType>(sites.size()) ? vertexOfSite[site] : -1);
+  }
+  vtkNew<vtkCellData> cellData;
+  cellData->ShallowCopy(rvdIn->GetCellData());
+  rvdOut->GetCellData()->ShallowCopy(cellData);
+  rvdOut->GetCellData()->AddArray(vertexIds);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TargetNumberOfVertices: " << this->TargetNumberOfVertices << "\n";
+  os << indent << "MaximumCost: " << this->MaximumCost << "\n";
+  os << indent << "Lambda: " << this->Lambda << "\n";
+  os << indent << "SpikeThreshold: " << this->SpikeThreshold << "\n";
+  os << indent << "SpikeSharpness: " << this->SpikeSharpness << "\n";
+  os << indent << "TopologyGuardVertexCount: " << this->TopologyGuardVertexCount << "\n";
+  os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
+  os << indent << "InvaginatedTerm: " << this->InvaginatedTerm << "\n";
+}

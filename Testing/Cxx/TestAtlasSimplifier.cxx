@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Atlas-guided simplification: ground truth on a torus, validity,
+// determinism and Atlas bookkeeping. (Work in progress: see the notes in
+// AtlasSimplifier.cxx on the sphere and capsule.)
+#include "AnalyticShapes.h"
+#include "AtlasSimplifier.h"
+#include "BlueNoiseSampler.h"
+#include "RestrictedVoronoi.h"
+#include "Vec3.h"
+#include "VoronoiMedialAxis.h"
+#include "vtkAnalyticShapeSource.h"
+#include "vtkAtlasMedialAxisSimplifier.h"
+#include "vtkBlueNoiseSurfaceSampler.h"
+#include "vtkMedialMeshConversion.h"
+#include "vtkRestrictedVoronoiDiagram.h"
+#include "vtkVoronoiMedialAxis.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <set>
+
+using namespace medialaxis;
+
+namespace
+{
+struct SimplifiedRun
+{
+  SurfaceSamples Sites;
+  RestrictedVoronoiDiagram Rvd;
+  AtlasMedialMesh Initial;
+  AtlasSimplifierResult Result;
+};
+
+SimplifiedRun Simplify(const TriangleMesh& surface, std::size_t samples, std::size_t target, bool cad)
+{
+  SimplifiedRun run;
+  SamplingOptions sampling;
+  sampling.NumberOfSamples = samples;
+  run.Sites = SampleSurface(surface, sampling);
+  run.Rvd = ComputeRestrictedVoronoi(surface, run.Sites.Points);
+  VoronoiMedialAxisResult voronoi =
+    ComputeVoronoiMedialAxis(surface, run.Sites.Points, run.Sites.TriangleIds, run.Rvd.ConcaveFeature);
+  run.Initial.Mesh = std::move(voronoi.Mesh);
+  run.Initial.AtlasOffsets = std::move(voronoi.AtlasOffsets);
+  run.Initial.AtlasSites = std::move(voronoi.AtlasSites);
+  AtlasSimplifierOptions options;
+  options.TargetNumberOfVertices = target;
+  options.PreserveSharpFeatures = cad;
+  run.Result = SimplifyMedialAxis(run.Initial, run.Rvd, run.Sites.Points, options);
+  return run;
+}
+
+// Twice the area of every triangle must be clearly positive.
+std::size_t DegenerateTriangles(const MedialMesh& m)
+{
+  std::size_t count = 0;
+  for (const auto& t : m.Faces)
+  {
+    const Point3 n = Cross(m.Centers[t[1]] - m.Centers[t[0]], m.Centers[t[2]] - m.Centers[t[0]]);
+    count += Norm(n) > 0.0 ? 0 : 1;
+  }
+  return count;
+}
+}
+
+TEST(AtlasSimplifier, TorusSimplifiesToItsCentreCircle)
+{
+  const double major = 2.0, minor = 0.5;
+  const SimplifiedRun run = Simplify(MakeTorus(major, minor, 24), 10000, 50, false);
+  const MedialMesh& m = run.Result.Medial.Mesh;
+  ASSERT_EQ(m.Centers.size(), 50u);
+  const double diagonal = std::sqrt(2.0) * 2.0 * major; // of the centre circle's bounding box
+  for (std::size_t v = 0; v < m.Centers.size(); ++v)
+  {
+    const Point3& c = m.Centers[v];
+    const double ring = std::hypot(std::hypot(c[0], c[1]) - major, c[2]);
+    EXPECT_LT(ring, 0.01 * diagonal) << "vertex " << v;
+    EXPECT_NEAR(m.Radii[v], minor, 0.01 * minor) << "vertex " << v;
+  }
+  EXPECT_EQ(EulerCharacteristic(m), 0);
+  EXPECT_TRUE(ValidateMedialMesh(m).IsValid()) << ValidateMedialMesh(m).Message;
+}
+
+TEST(AtlasSimplifier, OutputIsValidAndDeterministic)
+{
+  const TriangleMesh box = MakeRoundedBox({ 2.0, 1.5, 1.0 }, 0.2, 12);
+  const SimplifiedRun a = Simplify(box, 3000, 300, true);
+  const SimplifiedRun b = Simplify(box, 3000, 300, true);
+  const MedialMesh &ma = a.Result.Medial.Mesh, &mb = b.Result.Medial.Mesh;
+  EXPECT_EQ(ma.Centers.size(), 300u);
+  EXPECT_TRUE(ValidateMedialMesh(ma).IsValid()) << ValidateMedialMesh(ma).Message;
+  EXPECT_EQ(DegenerateTriangles(ma), 0u);
+  ASSERT_EQ(ma.Centers.size(), mb.Centers.size());
+  EXPECT_EQ(0, std::memcmp(ma.Centers.data(), mb.Centers.data(), ma.Centers.size() * sizeof(Point3)));
+  EXPECT_EQ(ma.Faces, mb.Faces);
+  EXPECT_EQ(a.Result.Medial.AtlasSites, b.Result.Medial.AtlasSites);
+  for (double r : ma.Radii)
+  {
+    EXPECT_GE(r, 0.0);
+  }
+}
+
+TEST(AtlasSimplifier, AtlasesKeepEverySite)
+{
+  const SimplifiedRun run = Simplify(MakeCapsule(0.5, 2.0, 16), 3000, 100, false);
+  const std::set<Index> before(run.Initial.AtlasSites.begin(), run.Initial.AtlasSites.end());
+  const auto& after = run.Result.Medial;
+  const std::set<Index> kept(after.AtlasSites.begin(), after.AtlasSites.end());
+  EXPECT_EQ(before, kept);
+  for (std::size_t v = 0; v + 1 < after.AtlasOffsets.size(); ++v)
+  {
+    EXPECT_TRUE(std::is_sorted(after.AtlasSites.begin() + after.AtlasOffsets[v],
+      after.AtlasSites.begin() + after.AtlasOffsets[v + 1]));
+  }
+}
+
+TEST(AtlasMedialAxisSimplifierFilter, PipelineAndCorrespondence)
+{
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToTorus();
+  shape->SetResolution(16);
+  vtkNew<vtkBlueNoiseSurfaceSampler> sampler;
+  sampler->SetInputConnection(shape->GetOutputPort());
+  sampler->SetNumberOfSamples(3000);
+  vtkNew<vtkRestrictedVoronoiDiagram> rvd;
+  rvd->SetInputConnection(0, shape->GetOutputPort());
+  rvd->SetInputConnection(1, sampler->GetOutputPort());
+  vtkNew<vtkVoronoiMedialAxis> voronoi;
+  voronoi->SetInputConnection(0, shape->GetOutputPort());
+  voronoi->SetInputConnection(1, rvd->GetOutputPort(1));
+  vtkNew<vtkAtlasMedialAxisSimplifier> simplifier;
+  simplifier->SetInputConnection(0, voronoi->GetOutputPort());
+  simplifier->SetInputConnection(1, rvd->GetOutputPort(0));
+  simplifier->SetTargetNumberOfVertices(200);
+  simplifier->PreserveSharpFeaturesOff();
+  simplifier->Update();
+  vtkPolyData* mat = simplifier->GetOutput();
+  EXPECT_EQ(mat->GetNumberOfPoints(), 200);
+  EXPECT_EQ(ValidateMedialPolyData(mat), "");
+  EXPECT_NE(mat->GetPointData()->GetArray("FeatureVertex"), nullptr);
+  EXPECT_NE(mat->GetCellData()->GetArray("StabilityRatio"), nullptr);
+  std::vector<Index> offsets, sites;
+  ASSERT_EQ(GetAtlasArrays(mat, offsets, sites), "");
+  vtkPolyData* colored = vtkPolyData::SafeDownCast(simplifier->GetOutputDataObject(1));
+  vtkDataArray* ids = colored->GetCellData()->GetArray("MedialVertexId");
+  ASSERT_NE(ids, nullptr);
+  double range[2];
+  ids->GetRange(range);
+  EXPECT_GE(range[0], 0.0);
+  EXPECT_LT(range[1], 200.0);
+}

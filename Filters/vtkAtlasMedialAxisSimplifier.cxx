@@ -210,10 +210,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   for (const auto& [name, value] : { std::pair<const char*, std::size_t>{ "Collapses", result.Collapses },
          { "RejectedCollapses", result.RejectedCollapses }, { "SnappedVertices", result.SnappedVertices } })
   {
-    vtkNew<vtkIdTypeArray> a;
-    a->SetName(name);
-    a->InsertNextValue(static_cast<vtkIdType>(value));
-    output->GetFieldData()->AddArray(a);
+    medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }
 
   // The RVD, coloured by a medial vertex whose Atlas holds each polygon's site.

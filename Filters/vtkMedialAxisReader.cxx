@@ -54,15 +54,8 @@ int vtkMedialAxisReader::RequestData(
     return 0;
   }
   medialaxis::MedialMeshToPolyData(result.Mesh, output);
-  for (const auto& [label, count] :
-    { std::pair<const char*, std::size_t>{ "DuplicateEdges", result.DuplicateEdges },
-      std::pair<const char*, std::size_t>{ "DuplicateFaces", result.DuplicateFaces } })
-  {
-    vtkNew<vtkIdTypeArray> a;
-    a->SetName(label);
-    a->InsertNextValue(static_cast<vtkIdType>(count));
-    output->GetFieldData()->AddArray(a);
-  }
+  medialaxis::AddFieldValue(output, "DuplicateEdges", static_cast<long long>(result.DuplicateEdges));
+  medialaxis::AddFieldValue(output, "DuplicateFaces", static_cast<long long>(result.DuplicateFaces));
   if (result.DuplicateEdges || result.DuplicateFaces)
   {
     vtkWarningMacro(<< name << ": dropped " << result.DuplicateFaces << " duplicate face(s) and "

@@ -58,6 +58,14 @@ void MedialMeshToPolyData(const MedialMesh& mesh, vtkPolyData* output)
   output->GetPointData()->SetScalars(radius);
 }
 
+void AddFieldValue(vtkPolyData* output, const char* name, long long value)
+{
+  vtkNew<vtkIdTypeArray> a;
+  a->SetName(name);
+  a->InsertNextValue(static_cast<vtkIdType>(value));
+  output->GetFieldData()->AddArray(a);
+}
+
 void AddAtlasArrays(
   vtkPolyData* output, const std::vector<Index>& offsets, const std::vector<Index>& sites)
 {

@@ -37,6 +37,9 @@ void AddAtlasArrays(
 /// Reads the Atlas arrays back; returns an error message ("" on success).
 std::string GetAtlasArrays(vtkPolyData* input, std::vector<Index>& offsets, std::vector<Index>& sites);
 
+/// Adds a one-value field-data array (a count or statistic for reports).
+void AddFieldValue(vtkPolyData* output, const char* name, long long value);
+
 /// The shared validity check for medial meshes given as poly data.
 inline std::string ValidateMedialPolyData(vtkPolyData* input)
 {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkMedialSurfaceValidator.h"
 
+#include "vtkMedialMeshConversion.h"
 #include "vtkSurfacePreparation.h"
 
 #include "vtkDoubleArray.h"
@@ -18,13 +19,6 @@ vtkMedialSurfaceValidator::vtkMedialSurfaceValidator() = default;
 
 namespace
 {
-void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
-{
-  vtkNew<vtkIdTypeArray> a;
-  a->SetName(name);
-  a->InsertNextValue(value);
-  fd->AddArray(a);
-}
 void AddValue(vtkFieldData* fd, const char* name, double value)
 {
   vtkNew<vtkDoubleArray> a;
@@ -73,12 +67,12 @@ int vtkMedialSurfaceValidator::RequestData(
   }
 
   vtkFieldData* fd = output->GetFieldData();
-  AddCount(fd, "NumberOfMergedPoints", this->NumberOfMergedPoints);
-  AddCount(fd, "NumberOfDegenerateTriangles", this->NumberOfDegenerateTriangles);
-  AddCount(fd, "NumberOfDuplicateTriangles", this->NumberOfDuplicateTriangles);
-  AddCount(fd, "NumberOfReorientedTriangles", this->NumberOfReorientedTriangles);
-  AddCount(fd, "NumberOfInwardComponents", this->NumberOfInwardComponents);
-  AddCount(fd, "NumberOfComponents", this->NumberOfComponents);
+  medialaxis::AddFieldValue(output, "NumberOfMergedPoints", this->NumberOfMergedPoints);
+  medialaxis::AddFieldValue(output, "NumberOfDegenerateTriangles", this->NumberOfDegenerateTriangles);
+  medialaxis::AddFieldValue(output, "NumberOfDuplicateTriangles", this->NumberOfDuplicateTriangles);
+  medialaxis::AddFieldValue(output, "NumberOfReorientedTriangles", this->NumberOfReorientedTriangles);
+  medialaxis::AddFieldValue(output, "NumberOfInwardComponents", this->NumberOfInwardComponents);
+  medialaxis::AddFieldValue(output, "NumberOfComponents", this->NumberOfComponents);
   AddValue(fd, "Area", this->Area);
   AddValue(fd, "Volume", this->Volume);
   if (!this->Notes.empty())

@@ -127,10 +127,7 @@ int vtkVoronoiMedialAxis::RequestData(
          { "WeldedCells", result.WeldedCells }, { "FilteredTriangles", result.FilteredFaces },
          { "DroppedPockets", result.DroppedPockets } })
   {
-    vtkNew<vtkIdTypeArray> a;
-    a->SetName(name);
-    a->InsertNextValue(static_cast<vtkIdType>(value));
-    output->GetFieldData()->AddArray(a);
+    medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }
   this->UpdateProgress(1.0);
   return 1;

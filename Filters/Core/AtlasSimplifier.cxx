@@ -88,6 +88,13 @@ private:
   Placement Solve(const SphereQuadric& q, const std::vector<std::pair<Point3, double>>& anchors,
     Index a, Index b);
   double Spike(Index a, Index b) const;
+  // Accumulates a neighbour's centre for the uniform Laplacian.
+  void AddToRing(Index u, Point3& sum, double& sumSquares) const
+  {
+    const Point3 p{ this->Spheres[u][0], this->Spheres[u][1], this->Spheres[u][2] };
+    sum = sum + p;
+    sumSquares += Dot(p, p);
+  }
   double Weight(double spike) const;
   bool Collapse(Index a, Index b, const Sphere& target);
   bool CollapseAtFallback(Index a, Index b);
@@ -481,9 +488,7 @@ Placement Simplifier::Evaluate(Index a, Index b)
       {
         continue;
       }
-      const Point3 p{ this->Spheres[u][0], this->Spheres[u][1], this->Spheres[u][2] };
-      sum = sum + p;
-      sumSquares += Dot(p, p);
+      this->AddToRing(u, sum, sumSquares);
       ++count;
     }
   }
@@ -733,9 +738,7 @@ void Simplifier::Snap(Index v)
   double sumSquares = 0.0;
   for (Index u : this->Neighbours[v])
   {
-    const Point3 p{ this->Spheres[u][0], this->Spheres[u][1], this->Spheres[u][2] };
-    sum = sum + p;
-    sumSquares += Dot(p, p);
+    this->AddToRing(u, sum, sumSquares);
   }
   Eigen::Matrix3d A;
   Eigen::Vector3d B;

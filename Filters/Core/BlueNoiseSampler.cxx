@@ -5,6 +5,7 @@
 #include "KdTree.h"
 #include "Random.h"
 #include "RestrictedVoronoi.h"
+#include "SurfacePreparation.h"
 #include "TriangleAdjacency.h"
 #include "Vec3.h"
 
@@ -331,14 +332,7 @@ SurfaceSamples SampleSurface(const TriangleMesh& surface, const SamplingOptions&
   {
     return samples;
   }
-  double area = 0.0;
-  for (Index t = 0; t < static_cast<Index>(surface.Triangles.size()); ++t)
-  {
-    const Triangle& tri = surface.Triangles[t];
-    area += 0.5 *
-      Norm(Cross(surface.Points[tri[1]] - surface.Points[tri[0]],
-        surface.Points[tri[2]] - surface.Points[tri[0]]));
-  }
+  const double area = SurfaceArea(surface);
   if (!(area > 0.0))
   {
     throw std::invalid_argument("cannot sample a surface of zero area");

@@ -6,6 +6,7 @@
 #include "DisjointSets.h"
 #include "TriangleAdjacency.h"
 #include "MedialComplexCleanup.h"
+#include "SurfacePreparation.h"
 #include "Vec3.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -320,14 +321,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   // ball's centre can be behind all four tangent planes and still outside,
   // past another part of the surface.
   constexpr double clearCosine = 0.1;
-  double area = 0.0;
-  for (std::size_t t = 0; t < surface.Triangles.size(); ++t)
-  {
-    const Triangle& tri = surface.Triangles[t];
-    area += 0.5 * Norm(Cross(surface.Points[tri[1]] - surface.Points[tri[0]],
-                     surface.Points[tri[2]] - surface.Points[tri[0]]));
-  }
-  const double smallRadius = 4.0 * std::sqrt(2.0 * area / (std::sqrt(3.0) * sites.size()));
+  const double smallRadius = 4.0 * std::sqrt(2.0 * SurfaceArea(surface) / (std::sqrt(3.0) * sites.size()));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 1024),
     [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t c = r.begin(); c != r.end(); ++c)

@@ -156,6 +156,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.SpikeThreshold = this->SpikeThreshold;
   options.SpikeSharpness = this->SpikeSharpness;
   options.TopologyGuardVertexCount = static_cast<std::size_t>(this->TopologyGuardVertexCount);
+  options.StrictTopologyGuard = this->StrictTopologyGuard;
   options.PreserveSharpFeatures = this->PreserveSharpFeatures;
   options.InvaginatedTerm = this->InvaginatedTerm;
   options.Progress = [this](double f) {
@@ -208,7 +209,8 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   }
   output->GetCellData()->AddArray(stability);
   for (const auto& [name, value] : { std::pair<const char*, std::size_t>{ "Collapses", result.Collapses },
-         { "RejectedCollapses", result.RejectedCollapses }, { "SnappedVertices", result.SnappedVertices } })
+         { "RejectedCollapses", result.RejectedCollapses }, { "RelaxedCollapses", result.RelaxedCollapses },
+         { "SnappedVertices", result.SnappedVertices } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }
@@ -252,6 +254,7 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SpikeThreshold: " << this->SpikeThreshold << "\n";
   os << indent << "SpikeSharpness: " << this->SpikeSharpness << "\n";
   os << indent << "TopologyGuardVertexCount: " << this->TopologyGuardVertexCount << "\n";
+  os << indent << "StrictTopologyGuard: " << this->StrictTopologyGuard << "\n";
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
   os << indent << "InvaginatedTerm: " << this->InvaginatedTerm << "\n";
 }

@@ -80,6 +80,15 @@ public:
   ///@}
 
   ///@{
+  /// When, below the guard, no collapse keeps the link condition before the
+  /// target is reached: stop there (on) or reach the target without it (off,
+  /// default; such collapses are counted in field data RelaxedCollapses).
+  vtkSetMacro(StrictTopologyGuard, bool);
+  vtkGetMacro(StrictTopologyGuard, bool);
+  vtkBooleanMacro(StrictTopologyGuard, bool);
+  ///@}
+
+  ///@{
   /// CAD mode: snap feature vertices to sharp edges with radius 0 and keep
   /// them there (default on; turn off for organic shapes).
   vtkSetMacro(PreserveSharpFeatures, bool);
@@ -108,6 +117,7 @@ protected:
   double SpikeThreshold = 0.025;
   double SpikeSharpness = 100.0;
   vtkIdType TopologyGuardVertexCount = 200;
+  bool StrictTopologyGuard = false;
   bool PreserveSharpFeatures = true;
   bool InvaginatedTerm = true;
 

@@ -103,6 +103,8 @@ private:
   void UpdateFeature(Index v);
   void Push(Index a, Index b);
   AtlasMedialMesh Output() const;
+  void PushAllEdges();
+  bool CollapseUntil(std::size_t target, const std::function<bool(std::size_t)>& progress);
 
   const AtlasSimplifierOptions& Options;
   Normalisation Frame;
@@ -142,7 +144,8 @@ private:
   };
   std::priority_queue<Candidate> Queue;
   std::vector<Index> Scratch;
-  std::size_t Rejected = 0, Collapses = 0, Snapped = 0;
+  std::size_t Rejected = 0, Collapses = 0, Snapped = 0, RelaxedCollapses = 0;
+  bool Relaxed = false; // the link condition no longer guards collapses
 };
 
 void Simplifier::Setup(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
@@ -554,10 +557,14 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
   auto position = [this](Index v) {
     return Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
   };
-  if (this->AliveCount <= this->Options.TopologyGuardVertexCount && !this->LinkConditionHolds(a, b))
+  if (this->AliveCount <= this->Options.TopologyGuardVertexCount && !this->Relaxed && !this->LinkConditionHolds(a, b))
   {
     return false;
   }
+  // Removing an unstable spike edge turns its needle triangles in any
+  // direction: the flip test is meaningless there and only guards stable
+  // parts of the medial mesh.
+  const bool spike = this->Spike(a, b) < this->Options.SpikeThreshold;
   // Faces that survive: no zero area and no flip (for faces that had a
   // well-defined normal). Two faces that become one are merged. With the
   // vertex part of the link condition holding, that only happens when
@@ -605,7 +612,7 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
       {
         return false; // would be degenerate
       }
-      if (Norm(n0) > 1e-6 * l0 && Dot(n0, n1) <= 0.0)
+      if (!spike && Norm(n0) > 1e-6 * l0 && Dot(n0, n1) <= 0.0)
       {
         return false; // would flip
       }
@@ -770,6 +777,66 @@ void Simplifier::Snap(Index v)
   ++this->Snapped;
 }
 
+void Simplifier::PushAllEdges()
+{
+  for (std::size_t v = 0; v < this->Spheres.size(); ++v)
+  {
+    if (!this->Alive[v])
+    {
+      continue;
+    }
+    for (Index u : this->Neighbours[v])
+    {
+      if (static_cast<Index>(v) < u)
+      {
+        this->Push(static_cast<Index>(v), u);
+      }
+    }
+  }
+}
+
+// Collapses the cheapest valid edges until `target` vertices remain, the
+// queue runs dry or the cost limit is reached. Returns false on abort.
+bool Simplifier::CollapseUntil(std::size_t target, const std::function<bool(std::size_t)>& progress)
+{
+  std::size_t sinceReport = 0;
+  while (this->AliveCount > target && !this->Queue.empty())
+  {
+    const Candidate c = this->Queue.top();
+    this->Queue.pop();
+    if (!this->Alive[c.A] || !this->Alive[c.B] || c.VersionA != this->Version[c.A] ||
+      c.VersionB != this->Version[c.B])
+    {
+      continue; // stale
+    }
+    if (c.Cost > this->Options.MaximumCost)
+    {
+      this->Queue = decltype(this->Queue)();
+      break;
+    }
+    if (!this->Collapse(c.A, c.B, c.Target) && !this->CollapseAtFallback(c.A, c.B))
+    {
+      ++this->Rejected; // not retried until its neighbourhood changes
+      continue;
+    }
+    ++this->Collapses;
+    this->RelaxedCollapses += this->Relaxed ? 1 : 0;
+    for (Index u : this->Neighbours[c.A])
+    {
+      this->Push(c.A, u);
+    }
+    if (++sinceReport >= 256)
+    {
+      sinceReport = 0;
+      if (!progress(this->AliveCount))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 AtlasSimplifierResult Simplifier::Run()
 {
   AtlasSimplifierResult result;
@@ -786,16 +853,7 @@ AtlasSimplifierResult Simplifier::Run()
       }
     }
   }
-  for (std::size_t v = 0; v < nv; ++v)
-  {
-    for (Index u : this->Neighbours[v])
-    {
-      if (static_cast<Index>(v) < u)
-      {
-        this->Push(static_cast<Index>(v), u);
-      }
-    }
-  }
+  this->PushAllEdges();
   if (!report(0.1))
   {
     result.Aborted = true;
@@ -803,45 +861,33 @@ AtlasSimplifierResult Simplifier::Run()
   }
 
   const std::size_t target = std::max<std::size_t>(1, this->Options.TargetNumberOfVertices);
-  const std::size_t toRemove = nv > target ? nv - target : 0;
-  std::size_t lastReport = 0;
-  while (this->AliveCount > target && !this->Queue.empty())
+  const double toRemove = static_cast<double>(nv > target ? nv - target : 1);
+  auto progress = [&](std::size_t alive) {
+    return report(0.1 + 0.85 * std::min(1.0, static_cast<double>(nv - alive) / toRemove));
+  };
+  if (!this->CollapseUntil(target, progress))
   {
-    const Candidate c = this->Queue.top();
-    this->Queue.pop();
-    if (!this->Alive[c.A] || !this->Alive[c.B] || c.VersionA != this->Version[c.A] ||
-      c.VersionB != this->Version[c.B])
+    result.Aborted = true;
+    return result;
+  }
+  // Stalled below the topology guard (no collapse keeps the link condition,
+  // as in a contractible but non-collapsible "foam" of sheets): unless the
+  // guard is strict, reach the target anyway and count those collapses.
+  if (this->AliveCount > target && this->AliveCount <= this->Options.TopologyGuardVertexCount &&
+    !this->Options.StrictTopologyGuard)
+  {
+    this->Relaxed = true;
+    this->PushAllEdges();
+    if (!this->CollapseUntil(target, progress))
     {
-      continue; // stale
-    }
-    if (c.Cost > this->Options.MaximumCost)
-    {
-      break;
-    }
-    if (!this->Collapse(c.A, c.B, c.Target) && !this->CollapseAtFallback(c.A, c.B))
-    {
-      ++this->Rejected; // not retried until its neighbourhood changes
-      continue;
-    }
-    ++this->Collapses;
-    for (Index u : this->Neighbours[c.A])
-    {
-      this->Push(c.A, u);
-    }
-    const std::size_t done = nv - this->AliveCount;
-    if (toRemove > 0 && done - lastReport >= std::max<std::size_t>(1, toRemove / 100))
-    {
-      lastReport = done;
-      if (!report(0.1 + 0.85 * static_cast<double>(done) / static_cast<double>(toRemove)))
-      {
-        result.Aborted = true;
-        return result;
-      }
+      result.Aborted = true;
+      return result;
     }
   }
   result.Medial = this->Output();
   result.Collapses = this->Collapses;
   result.RejectedCollapses = this->Rejected;
+  result.RelaxedCollapses = this->RelaxedCollapses;
   result.SnappedVertices = this->Snapped;
   report(1.0);
   return result;

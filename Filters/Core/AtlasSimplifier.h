@@ -30,6 +30,10 @@ struct AtlasSimplifierOptions
   double SpikeThreshold = 0.025;
   /// Below this many vertices the link condition guards every collapse.
   std::size_t TopologyGuardVertexCount = 200;
+  /// When no collapse below the guard keeps the link condition and the
+  /// target is not reached: stop there (strict) or go on without it
+  /// (default; the collapses are counted in RelaxedCollapses).
+  bool StrictTopologyGuard = false;
   /// CAD extension: snap feature vertices to sharp edges (r = 0) and keep
   /// them there (paper section 4.4).
   bool PreserveSharpFeatures = true;
@@ -55,6 +59,7 @@ struct AtlasSimplifierResult
   AtlasMedialMesh Medial;
   std::size_t Collapses = 0;
   std::size_t RejectedCollapses = 0; // would have broken validity or topology
+  std::size_t RelaxedCollapses = 0;  // made without the link condition (see options)
   std::size_t SnappedVertices = 0;   // feature vertices moved onto sharp edges
   bool Aborted = false;
 };

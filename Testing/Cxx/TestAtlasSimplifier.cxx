@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Atlas-guided simplification: ground truth on a torus, validity,
-// determinism and Atlas bookkeeping. (Work in progress: see the notes in
-// AtlasSimplifier.cxx on the sphere and capsule.)
+// determinism and Atlas bookkeeping, on a sphere, a capsule and a torus.
 #include "AnalyticShapes.h"
 #include "AtlasSimplifier.h"
 #include "BlueNoiseSampler.h"
@@ -22,6 +21,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <set>
@@ -68,6 +68,33 @@ std::size_t DegenerateTriangles(const MedialMesh& m)
   }
   return count;
 }
+}
+
+TEST(AtlasSimplifier, UnitSphereSimplifiesToItsCentre)
+{
+  const SimplifiedRun run = Simplify(MakeSphere(1.0, 32), 10000, 1, false);
+  const MedialMesh& m = run.Result.Medial.Mesh;
+  ASSERT_EQ(m.Centers.size(), 1u);
+  std::cout << "centre " << Norm(m.Centers[0]) << " from the origin, radius " << m.Radii[0] << ", "
+            << run.Result.RelaxedCollapses << " collapses past the stalled link condition\n";
+  EXPECT_LT(Norm(m.Centers[0]), 0.005);
+  EXPECT_NEAR(m.Radii[0], 1.0, 0.005);
+}
+
+TEST(AtlasSimplifier, CapsuleSimplifiesToItsAxis)
+{
+  const double radius = 0.5, axis = 2.0;
+  const SimplifiedRun run = Simplify(MakeCapsule(radius, axis, 24), 10000, 20, false);
+  const MedialMesh& m = run.Result.Medial.Mesh;
+  ASSERT_EQ(m.Centers.size(), 20u);
+  for (std::size_t v = 0; v < m.Centers.size(); ++v)
+  {
+    const Point3& c = m.Centers[v];
+    const double z = std::clamp(c[2], -0.5 * axis, 0.5 * axis);
+    EXPECT_LT(Norm(c - Point3{ 0.0, 0.0, z }), 0.01 * axis) << "vertex " << v;
+    EXPECT_NEAR(m.Radii[v], radius, 0.01 * radius) << "vertex " << v;
+  }
+  EXPECT_TRUE(ValidateMedialMesh(m).IsValid());
 }
 
 TEST(AtlasSimplifier, TorusSimplifiesToItsCentreCircle)

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Per-stage wall time and peak resident memory of the MedialAxis pipeline.
 //
-//   medialaxis-benchmark [--samples N] [--threads T] [--scaling] [--shape torus|box|...] mesh...
+//   medialaxis-benchmark [--samples N] [--target V] [--cad] [--threads T] [--scaling]
+//                        [--shape torus|box|...] mesh...
 //
 // Memory: the process's resident peak during each stage, and in brackets
 // how far it rose above the resident size at the stage's start.
-// --scaling runs every mesh at 10K, 25K, 50K, 100K and 200K samples and
+// --scaling runs every mesh at 10K, 25K, 50K, 100K and 200K samples (target
+// a tenth of the samples) and
 // prints the fitted growth exponent of each stage's time.
 #include "AnalyticShapes.h"
 #include "BlueNoiseSampler.h"
+#include "AtlasSimplifier.h"
 #include "Parallel.h"
 #include "RestrictedVoronoi.h"
 #include "VoronoiMedialAxis.h"
@@ -107,7 +110,9 @@ bool LoadSurface(const std::string& spec, bool isShape, TriangleMesh& mesh, std:
   return true;
 }
 
-std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples)
+std::size_t TopologyGuard = AtlasSimplifierOptions().TopologyGuardVertexCount;
+
+std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples, std::size_t target, bool cad)
 {
   std::vector<Stage> stages;
   SurfaceSamples sites;
@@ -125,6 +130,24 @@ std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples)
     voronoi.Mesh.Centers.size(), voronoi.Mesh.Faces.size(), EdgesNotOnFaces(voronoi.Mesh).size(),
     static_cast<long long>(EulerCharacteristic(voronoi.Mesh)), voronoi.DelaunayCells,
     voronoi.AmbiguousInsideTests);
+  AtlasMedialMesh initial;
+  initial.Mesh = std::move(voronoi.Mesh);
+  initial.AtlasOffsets = std::move(voronoi.AtlasOffsets);
+  initial.AtlasSites = std::move(voronoi.AtlasSites);
+  AtlasSimplifierOptions options;
+  options.TargetNumberOfVertices = target;
+  options.PreserveSharpFeatures = cad;
+  options.TopologyGuardVertexCount = TopologyGuard;
+  AtlasSimplifierResult simplified;
+  stages.push_back(Measure("simplify", [&] {
+    simplified = SimplifyMedialAxis(initial, rvd, sites.Points, options);
+  }));
+  const MedialMesh& m = simplified.Medial.Mesh;
+  std::printf("  simplified MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "
+              "%zu collapses, %zu rejected, %zu past the link condition\n",
+    m.Centers.size(), m.Faces.size(), EdgesNotOnFaces(m).size(),
+    static_cast<long long>(EulerCharacteristic(m)), simplified.Collapses,
+    simplified.RejectedCollapses, simplified.RelaxedCollapses);
   return stages;
 }
 
@@ -142,7 +165,8 @@ void PrintStages(const std::string& name, std::size_t triangles, std::size_t sam
 
 int main(int argc, char* argv[])
 {
-  std::size_t samples = 50000;
+  std::size_t samples = 50000, target = 5000;
+  bool cad = false;
   int threads = 0;
   bool scaling = false;
   std::vector<std::pair<std::string, bool>> inputs; // (path or shape, is shape)
@@ -151,6 +175,12 @@ int main(int argc, char* argv[])
     const std::string arg = argv[i];
     if (arg == "--samples" && i + 1 < argc)
       samples = std::stoul(argv[++i]);
+    else if (arg == "--target" && i + 1 < argc)
+      target = std::stoul(argv[++i]);
+    else if (arg == "--guard" && i + 1 < argc)
+      TopologyGuard = std::stoul(argv[++i]);
+    else if (arg == "--cad")
+      cad = true;
     else if (arg == "--threads" && i + 1 < argc)
       threads = std::stoi(argv[++i]);
     else if (arg == "--scaling")
@@ -160,7 +190,8 @@ int main(int argc, char* argv[])
     else if (arg == "-h" || arg == "--help")
     {
       std::cout << "usage: " << argv[0]
-                << " [--samples N] [--threads T] [--scaling] [--shape torus|sphere|box] mesh...\n";
+                << " [--samples N] [--target V] [--cad] [--threads T] [--scaling]"
+                   " [--shape torus|sphere|box] mesh...\n";
       return 0;
     }
     else
@@ -184,7 +215,7 @@ int main(int argc, char* argv[])
       if (!scaling)
       {
         std::vector<Stage> stages = loading;
-        const auto run = RunPipeline(mesh, samples);
+        const auto run = RunPipeline(mesh, samples, target, cad);
         stages.insert(stages.end(), run.begin(), run.end());
         PrintStages(name, mesh.Triangles.size(), samples, stages);
         continue;
@@ -193,7 +224,7 @@ int main(int argc, char* argv[])
       std::vector<std::vector<Stage>> runs;
       for (std::size_t n : counts)
       {
-        runs.push_back(RunPipeline(mesh, n));
+        runs.push_back(RunPipeline(mesh, n, n / 10, cad));
         PrintStages(name, mesh.Triangles.size(), n, runs.back());
       }
       // Least-squares slope of log(time) against log(samples), per stage.

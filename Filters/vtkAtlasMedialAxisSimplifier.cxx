@@ -20,10 +20,12 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
+#include <limits>
 
 vtkStandardNewMacro(vtkAtlasMedialAxisSimplifier);
 
 vtkAtlasMedialAxisSimplifier::vtkAtlasMedialAxisSimplifier()
+  : TopologyGuardVertexCount(VTK_ID_MAX)
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
@@ -155,7 +157,9 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.Lambda = this->Lambda;
   options.SpikeThreshold = this->SpikeThreshold;
   options.SpikeSharpness = this->SpikeSharpness;
-  options.TopologyGuardVertexCount = static_cast<std::size_t>(this->TopologyGuardVertexCount);
+  options.TopologyGuardVertexCount = this->TopologyGuardVertexCount >= VTK_ID_MAX
+    ? std::numeric_limits<std::size_t>::max()
+    : static_cast<std::size_t>(this->TopologyGuardVertexCount);
   options.StrictTopologyGuard = this->StrictTopologyGuard;
   options.PreserveSharpFeatures = this->PreserveSharpFeatures;
   options.InvaginatedTerm = this->InvaginatedTerm;
@@ -209,7 +213,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   }
   output->GetCellData()->AddArray(stability);
   for (const auto& [name, value] : { std::pair<const char*, std::size_t>{ "Collapses", result.Collapses },
-         { "RejectedCollapses", result.RejectedCollapses }, { "RelaxedCollapses", result.RelaxedCollapses },
+         { "RejectedCollapses", result.RejectedCollapses }, { "RelaxedCollapses", result.RelaxedCollapses }, { "MergedFaces", result.MergedFaces },
          { "SnappedVertices", result.SnappedVertices } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));

@@ -5,6 +5,9 @@
 #include "Vec3.h"
 
 #include <Eigen/Dense>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 #include <LBFGS.h>
 
 #include <algorithm>
@@ -84,9 +87,9 @@ public:
 private:
   void Setup(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
     const std::vector<Point3>& sites);
-  Placement Evaluate(Index a, Index b);
+  Placement Evaluate(Index a, Index b, std::vector<std::pair<Point3, double>>& anchors) const;
   Placement Solve(const SphereQuadric& q, const std::vector<std::pair<Point3, double>>& anchors,
-    Index a, Index b);
+    Index a, Index b) const;
   double Spike(Index a, Index b) const;
   // Accumulates a neighbour's centre for the uniform Laplacian.
   void AddToRing(Index u, Point3& sum, double& sumSquares) const
@@ -102,6 +105,8 @@ private:
   void Snap(Index v);
   void UpdateFeature(Index v);
   void Push(Index a, Index b);
+  struct Candidate;
+  Candidate MakeCandidate(Index a, Index b, std::vector<std::pair<Point3, double>>& anchors) const;
   AtlasMedialMesh Output() const;
   void PushAllEdges();
   bool CollapseUntil(std::size_t target, const std::function<bool(std::size_t)>& progress);
@@ -143,8 +148,8 @@ private:
     }
   };
   std::priority_queue<Candidate> Queue;
-  std::vector<Index> Scratch;
-  std::size_t Rejected = 0, Collapses = 0, Snapped = 0, RelaxedCollapses = 0;
+  std::vector<std::pair<Point3, double>> Anchors; // scratch for Evaluate
+  std::size_t Rejected = 0, Collapses = 0, Snapped = 0, RelaxedCollapses = 0, Merged = 0;
   bool Relaxed = false; // the link condition no longer guards collapses
 };
 
@@ -313,7 +318,7 @@ double Simplifier::Weight(double spike) const
 }
 
 Placement Simplifier::Solve(const SphereQuadric& q,
-  const std::vector<std::pair<Point3, double>>& anchors, Index a, Index b)
+  const std::vector<std::pair<Point3, double>>& anchors, Index a, Index b) const
 {
   const Sphere& pa = this->Spheres[a];
   const Sphere& pb = this->Spheres[b];
@@ -377,18 +382,23 @@ Placement Simplifier::Solve(const SphereQuadric& q,
       }
       B[i] = q.B[i];
     }
-    const Eigen::FullPivLU<Eigen::Matrix4d> lu(A);
-    if (lu.rank() == 4 && lu.rcond() > 1e-12)
+    // A is a sum of outer products (plus the Laplacian on x, y, z): symmetric
+    // positive semi-definite, so LDL^T, with a relative pivot test for
+    // singular systems.
+    const Eigen::LDLT<Eigen::Matrix4d> ldlt(A);
+    const Eigen::Vector4d pivots = ldlt.vectorD().cwiseAbs();
+    if (ldlt.info() == Eigen::Success && pivots.minCoeff() > 1e-12 * pivots.maxCoeff())
     {
-      const Eigen::Vector4d x = lu.solve(B);
+      const Eigen::Vector4d x = ldlt.solve(B);
       Sphere s{ x[0], x[1], x[2], x[3] };
       if (s[3] < 0.0)
       {
         // Best centre with r = 0: the 3 x 3 system of the first rows.
-        const Eigen::FullPivLU<Eigen::Matrix3d> lu3(A.topLeftCorner<3, 3>());
-        if (lu3.rank() == 3)
+        const Eigen::LDLT<Eigen::Matrix3d> ldlt3(A.topLeftCorner<3, 3>());
+        const Eigen::Vector3d p3 = ldlt3.vectorD().cwiseAbs();
+        if (ldlt3.info() == Eigen::Success && p3.minCoeff() > 1e-12 * p3.maxCoeff())
         {
-          const Eigen::Vector3d y = lu3.solve(B.head<3>());
+          const Eigen::Vector3d y = ldlt3.solve(B.head<3>());
           s = { y[0], y[1], y[2], 0.0 };
         }
       }
@@ -437,12 +447,13 @@ Placement Simplifier::Solve(const SphereQuadric& q,
   return best;
 }
 
-Placement Simplifier::Evaluate(Index a, Index b)
+Placement Simplifier::Evaluate(
+  Index a, Index b, std::vector<std::pair<Point3, double>>& anchors) const
 {
   // Union of the Atlases, each cell once: Q(A u B) = Q(A) + Q(B) - Q(A n B).
   SphereQuadric q = this->AtlasQuadric[a];
   q += this->AtlasQuadric[b];
-  std::vector<std::pair<Point3, double>> anchors;
+  anchors.clear();
   const auto& A = this->Atlas[a];
   const auto& B = this->Atlas[b];
   std::size_t i = 0, j = 0;
@@ -508,19 +519,26 @@ Placement Simplifier::Evaluate(Index a, Index b)
   return this->Solve(q, anchors, a, b);
 }
 
-void Simplifier::Push(Index a, Index b)
+Simplifier::Candidate Simplifier::MakeCandidate(
+  Index a, Index b, std::vector<std::pair<Point3, double>>& anchors) const
 {
   if (a > b)
   {
     std::swap(a, b);
   }
-  const Placement p = this->Evaluate(a, b);
-  if (!(p.Energy < HUGE_VAL))
+  const Placement p = this->Evaluate(a, b, anchors);
+  const double cost =
+    p.Energy < HUGE_VAL ? std::max(0.0, p.Energy) * this->Weight(this->Spike(a, b)) : HUGE_VAL;
+  return { cost, a, b, this->Version[a], this->Version[b], p.Target };
+}
+
+void Simplifier::Push(Index a, Index b)
+{
+  const Candidate c = this->MakeCandidate(a, b, this->Anchors);
+  if (c.Cost < HUGE_VAL)
   {
-    return;
+    this->Queue.push(c);
   }
-  const double cost = std::max(0.0, p.Energy) * this->Weight(this->Spike(a, b));
-  this->Queue.push({ cost, a, b, this->Version[a], this->Version[b], p.Target });
 }
 
 bool Simplifier::LinkConditionHolds(Index a, Index b) const
@@ -635,6 +653,7 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
   {
     this->FaceAlive[f] = 0;
   }
+  this->Merged += mergedAway.size();
   for (Index f : this->VertexFaces[b])
   {
     if (!this->FaceAlive[f])
@@ -677,20 +696,38 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
   std::vector<Index>().swap(this->Neighbours[b]);
   std::vector<Index>().swap(this->VertexFaces[b]);
 
-  // Atlas and its quadric.
+  // Atlas and its quadric: Q(A u B) = Q(A) + Q(B) - Q(A n B).
   std::vector<Index> atlas;
-  std::set_union(this->Atlas[a].begin(), this->Atlas[a].end(), this->Atlas[b].begin(),
-    this->Atlas[b].end(), std::back_inserter(atlas));
-  this->Atlas[a] = std::move(atlas);
-  std::vector<Index>().swap(this->Atlas[b]);
-  this->AtlasQuadric[a] = SphereQuadric();
-  for (Index s : this->Atlas[a])
+  atlas.reserve(this->Atlas[a].size() + this->Atlas[b].size());
+  this->AtlasQuadric[a] += this->AtlasQuadric[b];
   {
-    if (!this->Invaginated[s])
+    const auto& A = this->Atlas[a];
+    const auto& B = this->Atlas[b];
+    std::size_t i = 0, j = 0;
+    while (i < A.size() || j < B.size())
     {
-      this->AtlasQuadric[a] += this->CellQuadric[s];
+      if (j == B.size() || (i < A.size() && A[i] < B[j]))
+      {
+        atlas.push_back(A[i++]);
+      }
+      else if (i == A.size() || B[j] < A[i])
+      {
+        atlas.push_back(B[j++]);
+      }
+      else
+      {
+        if (!this->Invaginated[A[i]])
+        {
+          this->AtlasQuadric[a] -= this->CellQuadric[A[i]];
+        }
+        atlas.push_back(A[i]);
+        ++i;
+        ++j;
+      }
     }
   }
+  this->Atlas[a] = std::move(atlas);
+  std::vector<Index>().swap(this->Atlas[b]);
   this->Spheres[a] = target;
   this->Alive[b] = 0;
   --this->AliveCount;
@@ -763,12 +800,13 @@ void Simplifier::Snap(Index v)
     A += this->Options.Lambda * Eigen::Matrix3d::Identity();
     B += w * Eigen::Vector3d(sum[0], sum[1], sum[2]);
   }
-  const Eigen::FullPivLU<Eigen::Matrix3d> lu(A);
-  if (lu.rank() < 3 || !(lu.rcond() > 1e-12))
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(A);
+  const Eigen::Vector3d pivots = ldlt.vectorD().cwiseAbs();
+  if (ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff()))
   {
     return;
   }
-  const Eigen::Vector3d x = lu.solve(B);
+  const Eigen::Vector3d x = ldlt.solve(B);
   if (!x.allFinite())
   {
     return;
@@ -779,6 +817,7 @@ void Simplifier::Snap(Index v)
 
 void Simplifier::PushAllEdges()
 {
+  std::vector<std::array<Index, 2>> edges;
   for (std::size_t v = 0; v < this->Spheres.size(); ++v)
   {
     if (!this->Alive[v])
@@ -789,8 +828,26 @@ void Simplifier::PushAllEdges()
     {
       if (static_cast<Index>(v) < u)
       {
-        this->Push(static_cast<Index>(v), u);
+        edges.push_back({ static_cast<Index>(v), u });
       }
+    }
+  }
+  // Evaluations are independent: in parallel, each into its own slot.
+  std::vector<Candidate> candidates(edges.size());
+  tbb::enumerable_thread_specific<std::vector<std::pair<Point3, double>>> scratch;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 512),
+    [&](const tbb::blocked_range<std::size_t>& r) {
+      auto& anchors = scratch.local();
+      for (std::size_t k = r.begin(); k != r.end(); ++k)
+      {
+        candidates[k] = this->MakeCandidate(edges[k][0], edges[k][1], anchors);
+      }
+    });
+  for (const Candidate& c : candidates)
+  {
+    if (c.Cost < HUGE_VAL)
+    {
+      this->Queue.push(c);
     }
   }
 }
@@ -888,6 +945,7 @@ AtlasSimplifierResult Simplifier::Run()
   result.Collapses = this->Collapses;
   result.RejectedCollapses = this->Rejected;
   result.RelaxedCollapses = this->RelaxedCollapses;
+  result.MergedFaces = this->Merged;
   result.SnappedVertices = this->Snapped;
   report(1.0);
   return result;

@@ -3,6 +3,7 @@
 // terms) reads and prepares into a closed, manifold, outward surface whose
 // genus matches the one SOURCES.md gives. Skipped when the set is absent.
 #include "TestHelpers.h"
+#include "AtlasSimplifier.h"
 #include "BlueNoiseSampler.h"
 #include "RestrictedVoronoi.h"
 #include "VoronoiMedialAxis.h"
@@ -32,6 +33,7 @@ struct Expected
 {
   int Genus = -1;
   bool Inward = false;
+  bool Cad = false;
 };
 
 // Parses the table of SOURCES.md: | file | category | triangles | vertices |
@@ -70,6 +72,7 @@ std::map<std::string, Expected> ReadSourcesTable()
       continue;
     }
     x.Inward = cells[7].find("INWARD") != std::string::npos;
+    x.Cad = cells[1] == "cad";
     table[cells[0]] = x;
   }
   return table;
@@ -164,7 +167,8 @@ TEST_P(SharedMesh, PreparesToClosedOutwardSurfaceOfTheRightGenus)
 
 // The initial medial mesh of every shared mesh: no vertex outside the surface
 // (checked by VTK's independent ray casting) and, where SOURCES.md gives the
-// genus, Euler characteristic 1 - genus.
+// genus, Euler characteristic 1 - genus; then simplified to 1,000 vertices
+// (CAD mode for the CAD meshes): valid, and with the same topology.
 TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
 {
   const std::string name = GetParam();
@@ -231,6 +235,44 @@ TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
   if (KnownTopologyExceptions().count(name) == 0)
   {
     EXPECT_EQ(chi, 1 - expected.Genus) << name;
+  }
+
+  // Simplified to 1,000 vertices: still a valid medial mesh with the same
+  // topology (the link condition guards every collapse by default), except
+  // that each face merge closes one spurious tetrahedral bubble (chi - 1).
+  medialaxis::AtlasMedialMesh initial;
+  initial.Mesh = mesh;
+  initial.AtlasOffsets = mat.AtlasOffsets;
+  initial.AtlasSites = mat.AtlasSites;
+  medialaxis::AtlasSimplifierOptions options;
+  options.TargetNumberOfVertices = 1000;
+  options.PreserveSharpFeatures = expected.Cad;
+  const auto simplified = medialaxis::SimplifyMedialAxis(initial, rvd, sites.Points, options);
+  const auto& small = simplified.Medial.Mesh;
+  EXPECT_EQ(small.Centers.size(), 1000u) << name;
+  EXPECT_TRUE(medialaxis::ValidateMedialMesh(small).IsValid())
+    << name << ": " << medialaxis::ValidateMedialMesh(small).Message;
+  std::size_t degenerate = 0;
+  for (const auto& t : small.Faces)
+  {
+    double e1[3], e2[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      e1[k] = small.Centers[t[1]][k] - small.Centers[t[0]][k];
+      e2[k] = small.Centers[t[2]][k] - small.Centers[t[0]][k];
+    }
+    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+      e1[0] * e2[1] - e1[1] * e2[0] };
+    degenerate += (n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0) ? 0 : 1;
+  }
+  EXPECT_EQ(degenerate, 0u) << name;
+  const long long simplifiedChi = medialaxis::EulerCharacteristic(small);
+  std::cout << name << ": simplified to " << small.Centers.size() << " vertices, Euler characteristic "
+            << simplifiedChi << ", " << simplified.MergedFaces << " bubbles closed, "
+            << simplified.RelaxedCollapses << " collapses past the link condition\n";
+  if (simplified.RelaxedCollapses == 0)
+  {
+    EXPECT_EQ(simplifiedChi, chi - static_cast<long long>(simplified.MergedFaces)) << name;
   }
 }
 

@@ -115,6 +115,123 @@ TEST(AtlasSimplifier, TorusSimplifiesToItsCentreCircle)
   EXPECT_TRUE(ValidateMedialMesh(m).IsValid()) << ValidateMedialMesh(m).Message;
 }
 
+namespace
+{
+// Distance from p to the nearest of the 12 edges of the cube [-h, h]^3.
+double DistanceToCubeEdges(const Point3& p, double h)
+{
+  double best = HUGE_VAL;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (double su : { -h, h })
+    {
+      for (double sv : { -h, h })
+      {
+        Point3 q;
+        q[axis] = std::clamp(p[axis], -h, h);
+        q[u] = su;
+        q[v] = sv;
+        best = std::min(best, Norm(p - q));
+      }
+    }
+  }
+  return best;
+}
+
+// Edges of the medial mesh that bound exactly one triangle.
+std::vector<std::array<Index, 2>> BoundaryEdges(const MedialMesh& m)
+{
+  std::vector<std::array<Index, 2>> edges;
+  for (const auto& t : m.Faces)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.push_back({ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::array<Index, 2>> boundary;
+  for (std::size_t i = 0; i < edges.size(); ++i)
+  {
+    const bool single = (i == 0 || edges[i - 1] != edges[i]) &&
+      (i + 1 == edges.size() || edges[i + 1] != edges[i]);
+    if (single)
+    {
+      boundary.push_back(edges[i]);
+    }
+  }
+  return boundary;
+}
+}
+
+TEST(AtlasSimplifier, BoxBoundaryReachesTheSharpEdges)
+{
+  // CAD mode: the medial sheets of a box end on its edges with radius 0.
+  const double diagonal = 2.0 * std::sqrt(3.0);
+  for (bool cad : { true, false })
+  {
+    const SimplifiedRun run = Simplify(MakeRoundedBox({ 2, 2, 2 }, 0.0, 32), 20000, 2000, cad);
+    const MedialMesh& m = run.Result.Medial.Mesh;
+    double worstRadius = 0.0, worstDistance = 0.0, meanDistance = 0.0;
+    std::set<Index> boundary;
+    for (const auto& e : BoundaryEdges(m))
+    {
+      boundary.insert(e[0]);
+      boundary.insert(e[1]);
+    }
+    ASSERT_FALSE(boundary.empty());
+    for (Index v : boundary)
+    {
+      const double d = DistanceToCubeEdges(m.Centers[v], 1.0);
+      worstRadius = std::max(worstRadius, m.Radii[v]);
+      worstDistance = std::max(worstDistance, d);
+      meanDistance += d / static_cast<double>(boundary.size());
+    }
+    std::cout << (cad ? "CAD mode" : "organic mode") << ": " << boundary.size()
+              << " boundary vertices, largest radius " << worstRadius << ", farthest from an edge "
+              << worstDistance << ", mean " << meanDistance << "\n";
+    if (cad)
+    {
+      EXPECT_LT(worstRadius, 0.005 * diagonal);
+      EXPECT_LT(worstDistance, 0.005 * diagonal);
+    }
+    else
+    {
+      // Without feature preservation the boundary draws back from the edges
+      // (paper Fig. 16c).
+      EXPECT_GT(meanDistance, 0.005 * diagonal);
+    }
+  }
+}
+
+TEST(AtlasSimplifier, RoundedBoxBoundaryFollowsTheFilletCentreLines)
+{
+  // Side 2, fillet radius 0.2: the fillet centre lines are the edges of the
+  // cube [-0.8, 0.8]^3, where the medial radius is 0.2.
+  const double rho = 0.2, diagonal = 2.0 * std::sqrt(3.0);
+  const SimplifiedRun run = Simplify(MakeRoundedBox({ 2, 2, 2 }, rho, 16), 20000, 2000, true);
+  const MedialMesh& m = run.Result.Medial.Mesh;
+  std::size_t checked = 0;
+  double worst = 0.0;
+  for (const auto& e : BoundaryEdges(m))
+  {
+    if (std::fabs(m.Radii[e[0]] - rho) > 0.1 * rho || std::fabs(m.Radii[e[1]] - rho) > 0.1 * rho)
+    {
+      continue;
+    }
+    for (Index v : e)
+    {
+      worst = std::max(worst, DistanceToCubeEdges(m.Centers[v], 1.0 - rho));
+      ++checked;
+    }
+  }
+  std::cout << checked << " endpoints of fillet-radius boundary edges, farthest " << worst
+            << " from a fillet centre line\n";
+  EXPECT_GT(checked, 100u);
+  EXPECT_LT(worst, 0.01 * diagonal);
+}
+
 TEST(AtlasSimplifier, OutputIsValidAndDeterministic)
 {
   const TriangleMesh box = MakeRoundedBox({ 2.0, 1.5, 1.0 }, 0.2, 12);

@@ -544,25 +544,45 @@ void Simplifier::Push(Index a, Index b)
 bool Simplifier::LinkConditionHolds(Index a, Index b) const
 {
   // Common neighbours of a and b must be exactly the apices of faces (a, b, x).
-  std::vector<Index> common;
-  std::set_intersection(this->Neighbours[a].begin(), this->Neighbours[a].end(),
-    this->Neighbours[b].begin(), this->Neighbours[b].end(), std::back_inserter(common));
-  for (Index x : common)
+  Index apices[16];
+  std::size_t apexCount = 0;
+  for (Index f : this->VertexFaces[a])
   {
-    bool apex = false;
-    for (Index f : this->VertexFaces[a])
+    const auto& t = this->Faces[f];
+    if (this->FaceAlive[f] && (t[0] == b || t[1] == b || t[2] == b))
     {
-      const auto& t = this->Faces[f];
-      if (this->FaceAlive[f] && (t[0] == b || t[1] == b || t[2] == b) &&
-        (t[0] == x || t[1] == x || t[2] == x))
+      const Index x = t[0] != a && t[0] != b ? t[0] : (t[1] != a && t[1] != b ? t[1] : t[2]);
+      if (apexCount < 16)
       {
-        apex = true;
-        break;
+        apices[apexCount++] = x;
+      }
+      else
+      {
+        return false; // an edge in more than 16 faces: too tangled to collapse safely
       }
     }
-    if (!apex)
+  }
+  const auto& na = this->Neighbours[a];
+  const auto& nb = this->Neighbours[b];
+  std::size_t i = 0, j = 0;
+  while (i < na.size() && j < nb.size())
+  {
+    if (na[i] < nb[j])
     {
-      return false;
+      ++i;
+    }
+    else if (nb[j] < na[i])
+    {
+      ++j;
+    }
+    else
+    {
+      if (std::find(apices, apices + apexCount, na[i]) == apices + apexCount)
+      {
+        return false;
+      }
+      ++i;
+      ++j;
     }
   }
   return true;

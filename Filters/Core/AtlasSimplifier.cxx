@@ -37,6 +37,49 @@ struct Normalisation
   Point3 From(const Point3& p) const { return (1.0 / this->Scale) * p + this->Origin; }
 };
 
+// Solves the top-left N x N block of the quadric's system A x = B. A is a
+// sum of outer products (plus the Laplacian on x, y, z): symmetric positive
+// semi-definite, so LDL^T, refusing nearly singular systems.
+template <int N>
+bool SolveQuadric(const SphereQuadric& q, Eigen::Matrix<double, N, 1>& x)
+{
+  Eigen::Matrix<double, N, N> A;
+  Eigen::Matrix<double, N, 1> B;
+  for (int i = 0; i < N; ++i)
+  {
+    for (int j = 0; j < N; ++j)
+    {
+      A(i, j) = q.A[4 * i + j];
+    }
+    B[i] = q.B[i];
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, N, N>> ldlt(A);
+  const Eigen::Matrix<double, N, 1> pivots = ldlt.vectorD().cwiseAbs();
+  if (ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff()))
+  {
+    return false;
+  }
+  x = ldlt.solve(B);
+  return x.allFinite();
+}
+
+// Adds lambda x the uniform Laplacian (Eq. 12) over `count` neighbours with
+// centre sum `sum` and squared-norm sum `sumSquares`.
+void AddLaplacian(SphereQuadric& q, double lambda, const Point3& sum, double sumSquares, std::size_t count)
+{
+  if (count == 0)
+  {
+    return;
+  }
+  const double w = lambda / static_cast<double>(count);
+  for (int k = 0; k < 3; ++k)
+  {
+    q.A[4 * k + k] += lambda;
+    q.B[k] += w * sum[k];
+  }
+  q.C += w * sumSquares;
+}
+
 // Nonlinear fidelity of Eq. 11 plus the quadratic part, for L-BFGS.
 struct InvaginatedEnergy
 {
@@ -371,41 +414,18 @@ Placement Simplifier::Solve(const SphereQuadric& q,
 
   if (anchors.empty())
   {
-    // Closed form: A x = B (4 x 4), guarded against singular systems.
-    Eigen::Matrix4d A;
-    Eigen::Vector4d B;
-    for (int i = 0; i < 4; ++i)
+    // Closed form (4 x 4); a negative radius is replaced by the best centre
+    // with r = 0 (the 3 x 3 block).
+    Eigen::Vector4d x;
+    if (SolveQuadric<4>(q, x))
     {
-      for (int j = 0; j < 4; ++j)
-      {
-        A(i, j) = q.A[4 * i + j];
-      }
-      B[i] = q.B[i];
-    }
-    // A is a sum of outer products (plus the Laplacian on x, y, z): symmetric
-    // positive semi-definite, so LDL^T, with a relative pivot test for
-    // singular systems.
-    const Eigen::LDLT<Eigen::Matrix4d> ldlt(A);
-    const Eigen::Vector4d pivots = ldlt.vectorD().cwiseAbs();
-    if (ldlt.info() == Eigen::Success && pivots.minCoeff() > 1e-12 * pivots.maxCoeff())
-    {
-      const Eigen::Vector4d x = ldlt.solve(B);
       Sphere s{ x[0], x[1], x[2], x[3] };
-      if (s[3] < 0.0)
+      Eigen::Vector3d y;
+      if (s[3] < 0.0 && SolveQuadric<3>(q, y))
       {
-        // Best centre with r = 0: the 3 x 3 system of the first rows.
-        const Eigen::LDLT<Eigen::Matrix3d> ldlt3(A.topLeftCorner<3, 3>());
-        const Eigen::Vector3d p3 = ldlt3.vectorD().cwiseAbs();
-        if (ldlt3.info() == Eigen::Success && p3.minCoeff() > 1e-12 * p3.maxCoeff())
-        {
-          const Eigen::Vector3d y = ldlt3.solve(B.head<3>());
-          s = { y[0], y[1], y[2], 0.0 };
-        }
+        s = { y[0], y[1], y[2], 0.0 };
       }
-      if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]) && std::isfinite(s[3]))
-      {
-        consider(s);
-      }
+      consider(s);
     }
   }
   else
@@ -506,16 +526,7 @@ Placement Simplifier::Evaluate(
       ++count;
     }
   }
-  if (count > 0)
-  {
-    const double w = this->Options.Lambda / static_cast<double>(count);
-    for (int k = 0; k < 3; ++k)
-    {
-      q.A[4 * k + k] += this->Options.Lambda;
-      q.B[k] += w * sum[k];
-    }
-    q.C += w * sumSquares;
-  }
+  AddLaplacian(q, this->Options.Lambda, sum, sumSquares, count);
   return this->Solve(q, anchors, a, b);
 }
 
@@ -804,30 +815,9 @@ void Simplifier::Snap(Index v)
   {
     this->AddToRing(u, sum, sumSquares);
   }
-  Eigen::Matrix3d A;
-  Eigen::Vector3d B;
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      A(i, j) = q.A[4 * i + j];
-    }
-    B[i] = q.B[i];
-  }
-  if (!this->Neighbours[v].empty())
-  {
-    const double w = this->Options.Lambda / static_cast<double>(this->Neighbours[v].size());
-    A += this->Options.Lambda * Eigen::Matrix3d::Identity();
-    B += w * Eigen::Vector3d(sum[0], sum[1], sum[2]);
-  }
-  const Eigen::LDLT<Eigen::Matrix3d> ldlt(A);
-  const Eigen::Vector3d pivots = ldlt.vectorD().cwiseAbs();
-  if (ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff()))
-  {
-    return;
-  }
-  const Eigen::Vector3d x = ldlt.solve(B);
-  if (!x.allFinite())
+  AddLaplacian(q, this->Options.Lambda, sum, sumSquares, this->Neighbours[v].size());
+  Eigen::Vector3d x;
+  if (!SolveQuadric<3>(q, x))
   {
     return;
   }

@@ -191,7 +191,10 @@ private:
     }
   };
   std::priority_queue<Candidate> Queue;
-  std::vector<std::pair<Point3, double>> Anchors; // scratch for Evaluate
+  // Scratch buffers, reused to spare allocations on every collapse.
+  std::vector<std::pair<Point3, double>> Anchors;
+  std::vector<std::pair<std::array<Index, 3>, Index>> FaceKeys;
+  std::vector<Index> MergedAway, MergedNeighbours, MergedAtlas;
   std::size_t Rejected = 0, Collapses = 0, Snapped = 0, RelaxedCollapses = 0, Merged = 0;
   bool Relaxed = false; // the link condition no longer guards collapses
 };
@@ -620,7 +623,8 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
   // (a, b, x, y) bound a tetrahedral bubble, which the merge removes: the
   // edge part of Dey's link condition is relaxed on purpose, since a bubble
   // in the medial axis of a solid without cavities is always spurious.
-  std::vector<std::pair<std::array<Index, 3>, Index>> keys;
+  auto& keys = this->FaceKeys;
+  keys.clear();
   for (Index v : { a, b })
   {
     for (Index f : this->VertexFaces[v])
@@ -670,7 +674,8 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
     }
   }
   std::sort(keys.begin(), keys.end());
-  std::vector<Index> mergedAway;
+  auto& mergedAway = this->MergedAway;
+  mergedAway.clear();
   for (std::size_t i = 1; i < keys.size(); ++i)
   {
     if (keys[i].first == keys[i - 1].first)
@@ -718,17 +723,19 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
       n.erase(std::unique(n.begin(), n.end()), n.end());
     }
   }
-  std::vector<Index> merged;
+  auto& merged = this->MergedNeighbours;
+  merged.clear();
   std::set_union(this->Neighbours[a].begin(), this->Neighbours[a].end(),
     this->Neighbours[b].begin(), this->Neighbours[b].end(), std::back_inserter(merged));
   merged.erase(std::remove_if(merged.begin(), merged.end(), [a, b](Index u) { return u == a || u == b; }),
     merged.end());
-  this->Neighbours[a] = std::move(merged);
+  this->Neighbours[a].swap(merged); // the old list becomes the next scratch
   std::vector<Index>().swap(this->Neighbours[b]);
   std::vector<Index>().swap(this->VertexFaces[b]);
 
   // Atlas and its quadric: Q(A u B) = Q(A) + Q(B) - Q(A n B).
-  std::vector<Index> atlas;
+  auto& atlas = this->MergedAtlas;
+  atlas.clear();
   atlas.reserve(this->Atlas[a].size() + this->Atlas[b].size());
   this->AtlasQuadric[a] += this->AtlasQuadric[b];
   {
@@ -757,7 +764,7 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
       }
     }
   }
-  this->Atlas[a] = std::move(atlas);
+  this->Atlas[a].swap(atlas); // the old list becomes the next scratch
   std::vector<Index>().swap(this->Atlas[b]);
   this->Spheres[a] = target;
   this->Alive[b] = 0;

@@ -17,6 +17,8 @@
 
 #include "TestHelpers.h"
 #include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkFieldData.h"
 #include "vtkImplicitPolyDataDistance.h"
 #include "vtkDataArray.h"
 #include "vtkPointData.h"
@@ -344,4 +346,47 @@ TEST(AtlasMedialAxisSimplifierFilter, PipelineAndCorrespondence)
   ids->GetRange(range);
   EXPECT_GE(range[0], 0.0);
   EXPECT_LT(range[1], 200.0);
+}
+
+TEST(AtlasMedialAxisSimplifierFilter, BadInputsGiveClearErrors)
+{
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToSphere();
+  shape->SetResolution(8);
+  vtkNew<vtkBlueNoiseSurfaceSampler> sampler;
+  sampler->SetInputConnection(shape->GetOutputPort());
+  sampler->SetNumberOfSamples(500);
+  vtkNew<vtkRestrictedVoronoiDiagram> rvd;
+  rvd->SetInputConnection(0, shape->GetOutputPort());
+  rvd->SetInputConnection(1, sampler->GetOutputPort());
+  vtkNew<vtkVoronoiMedialAxis> voronoi;
+  voronoi->SetInputConnection(0, shape->GetOutputPort());
+  voronoi->SetInputConnection(1, rvd->GetOutputPort(1));
+  voronoi->Update();
+  rvd->Update();
+
+  auto run = [](vtkPolyData* mat, vtkPolyData* cells) {
+    vtkNew<vtkAtlasMedialAxisSimplifier> simplifier;
+    vtkNew<test::ErrorCatcher> errors;
+    simplifier->AddObserver(vtkCommand::ErrorEvent, errors);
+    simplifier->SetInputData(0, mat);
+    simplifier->SetInputData(1, cells);
+    simplifier->Update();
+    EXPECT_EQ(simplifier->GetOutput()->GetNumberOfPoints(), 0);
+    return errors->Last;
+  };
+  // A medial mesh without its Atlas (e.g. read from a .ma file).
+  vtkNew<vtkPolyData> noAtlas;
+  noAtlas->DeepCopy(voronoi->GetOutput());
+  noAtlas->GetFieldData()->RemoveArray("AtlasSites");
+  EXPECT_NE(run(noAtlas, rvd->GetOutput(0)).find("has no Atlas"), std::string::npos);
+  // The sites output instead of the RVD cells on port 1.
+  vtkPolyData* sites = vtkPolyData::SafeDownCast(rvd->GetOutputDataObject(1));
+  EXPECT_NE(run(voronoi->GetOutput(), sites).find("must be the restricted Voronoi diagram"),
+    std::string::npos);
+  // A medial mesh whose radius is invalid.
+  vtkNew<vtkPolyData> negative;
+  negative->DeepCopy(voronoi->GetOutput());
+  negative->GetPointData()->GetArray("Radius")->SetComponent(0, 0, -1.0);
+  EXPECT_NE(run(negative, rvd->GetOutput(0)).find("negative"), std::string::npos);
 }

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Embedding MedialAxis in a VTK C++ application: read a surface (or make a
 // filleted test part), check and repair it, sample it, split it into
-// restricted Voronoi cells and compute its initial medial mesh; write each
-// result (.vtp, and the medial mesh also as .ma).
+// restricted Voronoi cells, compute its initial medial mesh and simplify it;
+// write each result (.vtp, and the medial meshes also as .ma).
 //
-//   PrepareSurfaceExample [--output DIR] [--samples N] [mesh.obj|.off|.ply|.stl|.vtp|.vtk]
+//   PrepareSurfaceExample [--output DIR] [--samples N] [--target V] [--organic]
+//                         [mesh.obj|.off|.ply|.stl|.vtp|.vtk]
 #include "vtkAnalyticShapeSource.h"
+#include "vtkAtlasMedialAxisSimplifier.h"
 #include "vtkBlueNoiseSurfaceSampler.h"
 #include "vtkMedialAxisWriter.h"
 #include "vtkMedialSurfaceValidator.h"
@@ -28,6 +30,8 @@ int main(int argc, char* argv[])
   std::string outputDir = "output";
   std::string input;
   vtkIdType samples = 10000;
+  vtkIdType target = 1000;
+  bool cad = true;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -39,9 +43,18 @@ int main(int argc, char* argv[])
     {
       samples = std::stoll(argv[++i]);
     }
+    else if (arg == "--target" && i + 1 < argc)
+    {
+      target = std::stoll(argv[++i]);
+    }
+    else if (arg == "--organic")
+    {
+      cad = false;
+    }
     else if (arg == "--help" || arg == "-h")
     {
-      std::cout << "usage: " << argv[0] << " [--output DIR] [--samples N] [surface file]\n"
+      std::cout << "usage: " << argv[0]
+                << " [--output DIR] [--samples N] [--target V] [--organic] [surface file]\n"
                 << "Without a file, a box with rounded edges is generated.\n";
       return 0;
     }
@@ -107,6 +120,22 @@ int main(int argc, char* argv[])
             << mat->GetNumberOfPolys() << " triangles, " << mat->GetNumberOfLines()
             << " lines (from " << samples << " sites)\n";
 
+  vtkNew<vtkAtlasMedialAxisSimplifier> simplifier;
+  simplifier->SetInputConnection(0, voronoi->GetOutputPort());
+  simplifier->SetInputConnection(1, rvd->GetOutputPort(0));
+  simplifier->SetTargetNumberOfVertices(target);
+  simplifier->SetPreserveSharpFeatures(cad);
+  simplifier->Update();
+  vtkPolyData* simplified = simplifier->GetOutput();
+  if (simplified->GetNumberOfPoints() == 0)
+  {
+    std::cerr << "the simplification failed\n";
+    return 4;
+  }
+  std::cout << "simplified medial mesh: " << simplified->GetNumberOfPoints() << " spheres, "
+            << simplified->GetNumberOfPolys() << " triangles, " << simplified->GetNumberOfLines()
+            << " lines\n";
+
   vtksys::SystemTools::MakeDirectory(outputDir);
   auto writeVtp = [&outputDir, &stem](vtkAlgorithmOutput* port, const std::string& suffix) {
     const std::string path = outputDir + "/" + stem + suffix + ".vtp";
@@ -120,11 +149,18 @@ int main(int argc, char* argv[])
   bool ok = writeVtp(validator->GetOutputPort(), "_prepared");
   ok = writeVtp(rvd->GetOutputPort(0), "_rvd") && ok;
   ok = writeVtp(voronoi->GetOutputPort(), "_initial_mat") && ok;
-  vtkNew<vtkMedialAxisWriter> maWriter;
-  maWriter->SetInputConnection(voronoi->GetOutputPort());
-  const std::string maPath = outputDir + "/" + stem + "_initial_mat.ma";
-  maWriter->SetFileName(maPath.c_str());
-  ok = maWriter->Write() == 1 && ok;
-  std::cout << "wrote " << maPath << "\n";
+  ok = writeVtp(simplifier->GetOutputPort(0), "_mat") && ok;
+  ok = writeVtp(simplifier->GetOutputPort(1), "_correspondence") && ok;
+  for (const auto& [port, suffix] : { std::pair<vtkAlgorithmOutput*, const char*>{ voronoi->GetOutputPort(), "_initial_mat.ma" },
+         { simplifier->GetOutputPort(0), "_mat.ma" } })
+  {
+    vtkNew<vtkMedialAxisWriter> maWriter;
+    maWriter->SetInputConnection(port);
+    const std::string maPath = outputDir + "/" + stem + suffix;
+    maWriter->SetFileName(maPath.c_str());
+    const bool written = maWriter->Write() == 1;
+    std::cout << (written ? "wrote " : "cannot write ") << maPath << "\n";
+    ok = written && ok;
+  }
   return ok ? 0 : 4;
 }

@@ -317,15 +317,9 @@ TEST(AtlasMedialAxisSimplifierFilter, PipelineAndCorrespondence)
   vtkNew<vtkAnalyticShapeSource> shape;
   shape->SetShapeToTorus();
   shape->SetResolution(16);
-  vtkNew<vtkBlueNoiseSurfaceSampler> sampler;
-  sampler->SetInputConnection(shape->GetOutputPort());
-  sampler->SetNumberOfSamples(3000);
-  vtkNew<vtkRestrictedVoronoiDiagram> rvd;
-  rvd->SetInputConnection(0, shape->GetOutputPort());
-  rvd->SetInputConnection(1, sampler->GetOutputPort());
-  vtkNew<vtkVoronoiMedialAxis> voronoi;
-  voronoi->SetInputConnection(0, shape->GetOutputPort());
-  voronoi->SetInputConnection(1, rvd->GetOutputPort(1));
+  test::InitialMedialPipeline pipeline(shape->GetOutputPort(), 3000);
+  vtkRestrictedVoronoiDiagram* rvd = pipeline.Rvd;
+  vtkVoronoiMedialAxis* voronoi = pipeline.Voronoi;
   vtkNew<vtkAtlasMedialAxisSimplifier> simplifier;
   simplifier->SetInputConnection(0, voronoi->GetOutputPort());
   simplifier->SetInputConnection(1, rvd->GetOutputPort(0));
@@ -353,15 +347,9 @@ TEST(AtlasMedialAxisSimplifierFilter, BadInputsGiveClearErrors)
   vtkNew<vtkAnalyticShapeSource> shape;
   shape->SetShapeToSphere();
   shape->SetResolution(8);
-  vtkNew<vtkBlueNoiseSurfaceSampler> sampler;
-  sampler->SetInputConnection(shape->GetOutputPort());
-  sampler->SetNumberOfSamples(500);
-  vtkNew<vtkRestrictedVoronoiDiagram> rvd;
-  rvd->SetInputConnection(0, shape->GetOutputPort());
-  rvd->SetInputConnection(1, sampler->GetOutputPort());
-  vtkNew<vtkVoronoiMedialAxis> voronoi;
-  voronoi->SetInputConnection(0, shape->GetOutputPort());
-  voronoi->SetInputConnection(1, rvd->GetOutputPort(1));
+  test::InitialMedialPipeline pipeline(shape->GetOutputPort(), 500);
+  vtkRestrictedVoronoiDiagram* rvd = pipeline.Rvd;
+  vtkVoronoiMedialAxis* voronoi = pipeline.Voronoi;
   voronoi->Update();
   rvd->Update();
 

@@ -5,12 +5,16 @@
 
 #include "PolygonMesh.h"
 
+#include "vtkAlgorithmOutput.h"
+#include "vtkBlueNoiseSurfaceSampler.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRestrictedVoronoiDiagram.h"
 #include "vtkSmartPointer.h"
+#include "vtkVoronoiMedialAxis.h"
 
 #include <fstream>
 #include <string>
@@ -94,6 +98,25 @@ inline vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh)
   pd->SetPolys(polys);
   return pd;
 }
+
+/// The VTK chain sampler -> restricted Voronoi diagram -> initial medial
+/// mesh on a surface, as a user would wire it.
+struct InitialMedialPipeline
+{
+  vtkNew<vtkBlueNoiseSurfaceSampler> Sampler;
+  vtkNew<vtkRestrictedVoronoiDiagram> Rvd;
+  vtkNew<vtkVoronoiMedialAxis> Voronoi;
+
+  InitialMedialPipeline(vtkAlgorithmOutput* surface, vtkIdType samples)
+  {
+    this->Sampler->SetInputConnection(surface);
+    this->Sampler->SetNumberOfSamples(samples);
+    this->Rvd->SetInputConnection(0, surface);
+    this->Rvd->SetInputConnection(1, this->Sampler->GetOutputPort());
+    this->Voronoi->SetInputConnection(0, surface);
+    this->Voronoi->SetInputConnection(1, this->Rvd->GetOutputPort(1));
+  }
+};
 
 /// Writes `text` to a fresh file in the working directory and returns its path.
 inline std::string WriteTextFile(const std::string& name, const std::string& text)

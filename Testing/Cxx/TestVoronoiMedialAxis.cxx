@@ -281,15 +281,9 @@ TEST(VoronoiMedialAxisFilter, PipelineOutputsTheContract)
   shape->SetShapeToCapsule();
   shape->SetRadius(0.5);
   shape->SetResolution(16);
-  vtkNew<vtkBlueNoiseSurfaceSampler> sampler;
-  sampler->SetInputConnection(shape->GetOutputPort());
-  sampler->SetNumberOfSamples(2000);
-  vtkNew<vtkRestrictedVoronoiDiagram> rvd;
-  rvd->SetInputConnection(0, shape->GetOutputPort());
-  rvd->SetInputConnection(1, sampler->GetOutputPort());
-  vtkNew<vtkVoronoiMedialAxis> voronoi;
-  voronoi->SetInputConnection(0, shape->GetOutputPort());
-  voronoi->SetInputConnection(1, rvd->GetOutputPort(1));
+  test::InitialMedialPipeline pipeline(shape->GetOutputPort(), 2000);
+  vtkRestrictedVoronoiDiagram* rvd = pipeline.Rvd;
+  vtkVoronoiMedialAxis* voronoi = pipeline.Voronoi;
   voronoi->Update();
   vtkPolyData* mat = voronoi->GetOutput();
   ASSERT_GT(mat->GetNumberOfPolys(), 0);

@@ -11,6 +11,7 @@
 #include <LBFGS.h>
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <queue>
 
@@ -203,14 +204,10 @@ void Simplifier::Setup(const AtlasMedialMesh& input, const RestrictedVoronoiDiag
   const std::vector<Point3>& sites)
 {
   // Normalisation from the sites' bounding box (the surface's extent).
-  Point3 lo = sites.empty() ? Point3{ 0, 0, 0 } : sites[0], hi = lo;
-  for (const Point3& p : sites)
+  Point3 lo{ 0, 0, 0 }, hi{ 0, 0, 0 };
+  if (!sites.empty())
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
+    std::tie(lo, hi) = BoundingBox(sites);
   }
   const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
   this->Frame.Origin = lo;

@@ -60,15 +60,7 @@ void RandomCandidates(const TriangleMesh& surface, std::size_t count, std::uint6
 void SortSpatially(std::vector<Point3>& points, std::vector<Index>& triangles)
 {
   const std::size_t n = points.size();
-  Point3 lo = points[0], hi = points[0];
-  for (const Point3& p : points)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  }
+  const auto [lo, hi] = BoundingBox(points);
   const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-300 });
   auto spread = [](std::uint64_t v) { // 21 bits -> every third bit
     v &= 0x1fffff;

@@ -5,7 +5,10 @@
 
 #include "MedialMesh.h" // Point3
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace medialaxis
 {
@@ -43,6 +46,21 @@ inline Point3 Normalized(const Point3& a)
 {
   const double n = Norm(a);
   return n > 0.0 ? (1.0 / n) * a : Point3{ 0.0, 0.0, 0.0 };
+}
+
+/// Axis-aligned bounding box (lowest and highest corner) of non-empty points.
+inline std::pair<Point3, Point3> BoundingBox(const std::vector<Point3>& points)
+{
+  Point3 lo = points[0], hi = points[0];
+  for (const Point3& p : points)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  return { lo, hi };
 }
 }
 

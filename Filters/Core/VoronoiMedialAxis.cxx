@@ -179,15 +179,7 @@ private:
 
 double BoundingDiagonal(const TriangleMesh& surface)
 {
-  Point3 lo = surface.Points[0], hi = surface.Points[0];
-  for (const Point3& p : surface.Points)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  }
+  const auto [lo, hi] = BoundingBox(surface.Points);
   return Norm(hi - lo);
 }
 }

@@ -1,19 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "AtlasSimplifier.h"
 
+#include "CollapseQueue.h"
 #include "SphereQuadric.h"
 #include "Vec3.h"
 
 #include <Eigen/Dense>
+#include <LBFGS.h>
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <LBFGS.h>
 
 #include <algorithm>
-#include <tuple>
 #include <cmath>
-#include <queue>
+#include <tuple>
 
 namespace medialaxis
 {
@@ -66,7 +66,8 @@ bool SolveQuadric(const SphereQuadric& q, Eigen::Matrix<double, N, 1>& x)
 
 // Adds lambda x the uniform Laplacian (Eq. 12) over `count` neighbours with
 // centre sum `sum` and squared-norm sum `sumSquares`.
-void AddLaplacian(SphereQuadric& q, double lambda, const Point3& sum, double sumSquares, std::size_t count)
+void AddLaplacian(
+  SphereQuadric& q, double lambda, const Point3& sum, double sumSquares, std::size_t count)
 {
   if (count == 0)
   {
@@ -122,6 +123,12 @@ public:
   Simplifier(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
     const std::vector<Point3>& sites, const AtlasSimplifierOptions& options)
     : Options(options)
+    , Queue(
+        [this](const Candidate& c)
+        {
+          return this->Alive[c.A] && this->Alive[c.B] && c.VersionA == this->Version[c.A] &&
+            c.VersionB == this->Version[c.B];
+        })
   {
     this->Setup(input, rvd, sites);
   }
@@ -149,7 +156,7 @@ private:
   void Snap(Index v);
   void UpdateFeature(Index v);
   void Push(Index a, Index b);
-  struct Candidate;
+  using Candidate = CollapseQueue<Sphere>::Entry;
   Candidate MakeCandidate(Index a, Index b, std::vector<std::pair<Point3, double>>& anchors) const;
   AtlasMedialMesh Output() const;
   void PushAllEdges();
@@ -165,7 +172,7 @@ private:
   // Per vertex.
   std::vector<Sphere> Spheres;
   std::vector<std::vector<Index>> Atlas;
-  std::vector<SphereQuadric> AtlasQuadric; // regular cells of the Atlas, each once
+  std::vector<SphereQuadric> AtlasQuadric;    // regular cells of the Atlas, each once
   std::vector<std::vector<Index>> Neighbours; // sorted
   std::vector<std::vector<Index>> VertexFaces;
   std::vector<std::uint32_t> Version;
@@ -176,22 +183,7 @@ private:
   std::vector<std::array<Index, 3>> Faces;
   std::vector<char> FaceAlive;
 
-  struct Candidate
-  {
-    double Cost;
-    Index A, B;
-    std::uint32_t VersionA, VersionB;
-    Sphere Target;
-    bool operator<(const Candidate& o) const // for a min-queue, deterministic ties
-    {
-      if (this->Cost != o.Cost)
-      {
-        return this->Cost > o.Cost;
-      }
-      return this->A != o.A ? this->A > o.A : this->B > o.B;
-    }
-  };
-  std::priority_queue<Candidate> Queue;
+  CollapseQueue<Sphere> Queue;
   // Scratch buffers, reused to spare allocations on every collapse.
   std::vector<std::pair<Point3, double>> Anchors;
   std::vector<std::pair<std::array<Index, 3>, Index>> FaceKeys;
@@ -278,7 +270,8 @@ void Simplifier::Setup(const AtlasMedialMesh& input, const RestrictedVoronoiDiag
       }
     }
     std::sort(this->Atlas[v].begin(), this->Atlas[v].end());
-    this->Atlas[v].erase(std::unique(this->Atlas[v].begin(), this->Atlas[v].end()), this->Atlas[v].end());
+    this->Atlas[v].erase(
+      std::unique(this->Atlas[v].begin(), this->Atlas[v].end()), this->Atlas[v].end());
     for (Index s : this->Atlas[v])
     {
       if (!this->Invaginated[s])
@@ -291,7 +284,8 @@ void Simplifier::Setup(const AtlasMedialMesh& input, const RestrictedVoronoiDiag
   // Connectivity.
   this->Neighbours.assign(nv, {});
   this->VertexFaces.assign(nv, {});
-  auto link = [this](Index a, Index b) {
+  auto link = [this](Index a, Index b)
+  {
     this->Neighbours[a].push_back(b);
     this->Neighbours[b].push_back(a);
   };
@@ -357,7 +351,8 @@ double Simplifier::Spike(Index a, Index b) const
 
 double Simplifier::Weight(double spike) const
 {
-  return 1.0 / (1.0 + std::exp(-this->Options.SpikeSharpness * (spike - this->Options.SpikeThreshold)));
+  return 1.0 /
+    (1.0 + std::exp(-this->Options.SpikeSharpness * (spike - this->Options.SpikeThreshold)));
 }
 
 Placement Simplifier::Solve(const SphereQuadric& q,
@@ -367,7 +362,8 @@ Placement Simplifier::Solve(const SphereQuadric& q,
   const Sphere& pb = this->Spheres[b];
   const Sphere mid{ 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]),
     0.5 * (pa[3] + pb[3]) };
-  auto energyAt = [&](const Sphere& x) {
+  auto energyAt = [&](const Sphere& x)
+  {
     double e = q.Evaluate(x);
     for (const auto& [site, area] : anchors)
     {
@@ -377,7 +373,8 @@ Placement Simplifier::Solve(const SphereQuadric& q,
     return e;
   };
   Placement best;
-  auto consider = [&](const Sphere& x) {
+  auto consider = [&](const Sphere& x)
+  {
     if (x[3] < 0.0)
     {
       return;
@@ -548,7 +545,7 @@ void Simplifier::Push(Index a, Index b)
   const Candidate c = this->MakeCandidate(a, b, this->Anchors);
   if (c.Cost < HUGE_VAL)
   {
-    this->Queue.push(c);
+    this->Queue.Push(c);
   }
 }
 
@@ -569,7 +566,8 @@ bool Simplifier::LinkConditionHolds(Index a, Index b) const
       }
       else
       {
-        return false; // an edge in more than 16 faces: too tangled to collapse safely
+        return false; // an edge in more than 16 faces: too tangled to collapse
+                      // safely
       }
     }
   }
@@ -606,7 +604,8 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
   auto position = [this](Index v) {
     return Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
   };
-  if (this->AliveCount <= this->Options.TopologyGuardVertexCount && !this->Relaxed && !this->LinkConditionHolds(a, b))
+  if (this->AliveCount <= this->Options.TopologyGuardVertexCount && !this->Relaxed &&
+    !this->LinkConditionHolds(a, b))
   {
     return false;
   }
@@ -654,10 +653,10 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
       }
       const Point3 n0 = Cross(before[1] - before[0], before[2] - before[0]);
       const Point3 n1 = Cross(moved[1] - moved[0], moved[2] - moved[0]);
-      const double l0 = std::max(
-        { Distance2(before[0], before[1]), Distance2(before[1], before[2]), Distance2(before[2], before[0]) });
-      const double l1 = std::max(
-        { Distance2(moved[0], moved[1]), Distance2(moved[1], moved[2]), Distance2(moved[2], moved[0]) });
+      const double l0 = std::max({ Distance2(before[0], before[1]), Distance2(before[1], before[2]),
+        Distance2(before[2], before[0]) });
+      const double l1 = std::max({ Distance2(moved[0], moved[1]), Distance2(moved[1], moved[2]),
+        Distance2(moved[2], moved[0]) });
       if (!(Norm(n1) > 1e-10 * l1))
       {
         return false; // would be degenerate
@@ -706,7 +705,8 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
     this->VertexFaces[a].push_back(f);
   }
   auto& faces = this->VertexFaces[a];
-  faces.erase(std::remove_if(faces.begin(), faces.end(), [this](Index f) { return !this->FaceAlive[f]; }),
+  faces.erase(
+    std::remove_if(faces.begin(), faces.end(), [this](Index f) { return !this->FaceAlive[f]; }),
     faces.end());
   std::sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
@@ -724,7 +724,8 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
   merged.clear();
   std::set_union(this->Neighbours[a].begin(), this->Neighbours[a].end(),
     this->Neighbours[b].begin(), this->Neighbours[b].end(), std::back_inserter(merged));
-  merged.erase(std::remove_if(merged.begin(), merged.end(), [a, b](Index u) { return u == a || u == b; }),
+  merged.erase(
+    std::remove_if(merged.begin(), merged.end(), [a, b](Index u) { return u == a || u == b; }),
     merged.end());
   this->Neighbours[a].swap(merged); // the old list becomes the next scratch
   std::vector<Index>().swap(this->Neighbours[b]);
@@ -778,7 +779,8 @@ bool Simplifier::CollapseAtFallback(Index a, Index b)
 {
   const Sphere pa = this->Spheres[a], pb = this->Spheres[b];
   Sphere candidates[3] = { pa, pb,
-    { 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]), 0.5 * (pa[3] + pb[3]) } };
+    { 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]),
+      0.5 * (pa[3] + pb[3]) } };
   if (this->Feature[a] && !this->Feature[b])
   {
     candidates[1] = candidates[2] = pa;
@@ -796,9 +798,8 @@ bool Simplifier::CollapseAtFallback(Index a, Index b)
   {
     energy[k] = q.Evaluate(candidates[k]);
   }
-  std::sort(order.begin(), order.end(), [&energy](int x, int y) {
-    return energy[x] != energy[y] ? energy[x] < energy[y] : x < y;
-  });
+  std::sort(order.begin(), order.end(),
+    [&energy](int x, int y) { return energy[x] != energy[y] ? energy[x] < energy[y] : x < y; });
   for (int k : order)
   {
     if (this->Collapse(a, b, candidates[k]))
@@ -850,7 +851,8 @@ void Simplifier::PushAllEdges()
   std::vector<Candidate> candidates(edges.size());
   tbb::enumerable_thread_specific<std::vector<std::pair<Point3, double>>> scratch;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 512),
-    [&](const tbb::blocked_range<std::size_t>& r) {
+    [&](const tbb::blocked_range<std::size_t>& r)
+    {
       auto& anchors = scratch.local();
       for (std::size_t k = r.begin(); k != r.end(); ++k)
       {
@@ -861,7 +863,7 @@ void Simplifier::PushAllEdges()
   {
     if (c.Cost < HUGE_VAL)
     {
-      this->Queue.push(c);
+      this->Queue.Push(c);
     }
   }
 }
@@ -871,18 +873,12 @@ void Simplifier::PushAllEdges()
 bool Simplifier::CollapseUntil(std::size_t target, const std::function<bool(std::size_t)>& progress)
 {
   std::size_t sinceReport = 0;
-  while (this->AliveCount > target && !this->Queue.empty())
+  Candidate c;
+  while (this->AliveCount > target && this->Queue.PopCurrent(c))
   {
-    const Candidate c = this->Queue.top();
-    this->Queue.pop();
-    if (!this->Alive[c.A] || !this->Alive[c.B] || c.VersionA != this->Version[c.A] ||
-      c.VersionB != this->Version[c.B])
-    {
-      continue; // stale
-    }
     if (c.Cost > this->Options.MaximumCost)
     {
-      this->Queue = decltype(this->Queue)();
+      this->Queue.Clear();
       break;
     }
     if (!this->Collapse(c.A, c.B, c.Target) && !this->CollapseAtFallback(c.A, c.B))
@@ -933,9 +929,8 @@ AtlasSimplifierResult Simplifier::Run()
 
   const std::size_t target = std::max<std::size_t>(1, this->Options.TargetNumberOfVertices);
   const double toRemove = static_cast<double>(nv > target ? nv - target : 1);
-  auto progress = [&](std::size_t alive) {
-    return report(0.1 + 0.85 * std::min(1.0, static_cast<double>(nv - alive) / toRemove));
-  };
+  auto progress = [&](std::size_t alive)
+  { return report(0.1 + 0.85 * std::min(1.0, static_cast<double>(nv - alive) / toRemove)); };
   if (!this->CollapseUntil(target, progress))
   {
     result.Aborted = true;
@@ -1007,7 +1002,7 @@ AtlasMedialMesh Simplifier::Output() const
   }
   return out;
 }
-}
+} // namespace
 
 AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
   const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
@@ -1016,4 +1011,4 @@ AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
   Simplifier simplifier(input, rvd, sites, options);
   return simplifier.Run();
 }
-}
+} // namespace medialaxis

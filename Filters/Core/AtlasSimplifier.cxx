@@ -50,9 +50,9 @@ bool SolveQuadric(const SphereQuadric& q, Eigen::Matrix<double, N, 1>& x)
   {
     for (int j = 0; j < N; ++j)
     {
-      A(i, j) = q.A[4 * i + j];
+      A(i, j) = q.A(i, j);
     }
-    B[i] = q.B[i];
+    B[i] = q.B(i);
   }
   const Eigen::LDLT<Eigen::Matrix<double, N, N>> ldlt(A);
   const Eigen::Matrix<double, N, 1> pivots = ldlt.vectorD().cwiseAbs();
@@ -76,10 +76,10 @@ void AddLaplacian(
   const double w = lambda / static_cast<double>(count);
   for (int k = 0; k < 3; ++k)
   {
-    q.A[4 * k + k] += lambda;
-    q.B[k] += w * sum[k];
+    q.A(k, k) += lambda;
+    q.B(k) += w * sum[k];
   }
-  q.C += w * sumSquares;
+  q.C() += w * sumSquares;
 }
 
 // Nonlinear fidelity of Eq. 11 plus the quadratic part, for L-BFGS.
@@ -92,14 +92,10 @@ struct InvaginatedEnergy
   {
     const Sphere s{ x[0], x[1], x[2], x[3] };
     double energy = this->Quadratic->Evaluate(s);
+    const Sphere as = this->Quadratic->Times(s);
     for (int i = 0; i < 4; ++i)
     {
-      double row = 0.0;
-      for (int j = 0; j < 4; ++j)
-      {
-        row += this->Quadratic->A[4 * i + j] * s[j];
-      }
-      gradient[i] = 2.0 * row - 2.0 * this->Quadratic->B[i];
+      gradient[i] = 2.0 * as[i] - 2.0 * this->Quadratic->B(i);
     }
     for (const auto& [site, area] : *this->Anchors)
     {
@@ -506,21 +502,32 @@ Placement Simplifier::Evaluate(
   Point3 sum{ 0, 0, 0 };
   double sumSquares = 0.0;
   std::size_t count = 0;
-  for (Index v : { a, b })
   {
-    for (Index u : this->Neighbours[v])
+    // Both lists are sorted: merge them, shared neighbours once.
+    const auto& na = this->Neighbours[a];
+    const auto& nb = this->Neighbours[b];
+    std::size_t i = 0, j = 0;
+    while (i < na.size() || j < nb.size())
     {
-      if (u == a || u == b)
+      Index u;
+      if (j == nb.size() || (i < na.size() && na[i] < nb[j]))
       {
-        continue;
+        u = na[i++];
       }
-      // Shared neighbours count once.
-      if (v == b && std::binary_search(this->Neighbours[a].begin(), this->Neighbours[a].end(), u))
+      else if (i == na.size() || nb[j] < na[i])
       {
-        continue;
+        u = nb[j++];
       }
-      this->AddToRing(u, sum, sumSquares);
-      ++count;
+      else
+      {
+        u = na[i++];
+        ++j;
+      }
+      if (u != a && u != b)
+      {
+        this->AddToRing(u, sum, sumSquares);
+        ++count;
+      }
     }
   }
   AddLaplacian(q, this->Options.Lambda, sum, sumSquares, count);
@@ -597,18 +604,14 @@ bool Simplifier::LinkConditionHolds(Index a, Index b) const
   return true;
 }
 
-// Merges b into a at `target` if the result stays a valid medial mesh.
+// Merges b into a at `target` if the result stays a valid medial mesh (the
+// caller has checked the link condition).
 bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
 {
   const Point3 newPosition{ target[0], target[1], target[2] };
   auto position = [this](Index v) {
     return Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
   };
-  if (this->AliveCount <= this->Options.TopologyGuardVertexCount && !this->Relaxed &&
-    !this->LinkConditionHolds(a, b))
-  {
-    return false;
-  }
   // Removing an unstable spike edge turns its needle triangles in any
   // direction: the flip test is meaningless there and only guards stable
   // parts of the medial mesh.
@@ -881,7 +884,12 @@ bool Simplifier::CollapseUntil(std::size_t target, const std::function<bool(std:
       this->Queue.Clear();
       break;
     }
-    if (!this->Collapse(c.A, c.B, c.Target) && !this->CollapseAtFallback(c.A, c.B))
+    // The link condition depends on the connectivity alone: checked once,
+    // not for every placement tried.
+    const bool guarded =
+      this->AliveCount <= this->Options.TopologyGuardVertexCount && !this->Relaxed;
+    if ((guarded && !this->LinkConditionHolds(c.A, c.B)) ||
+      (!this->Collapse(c.A, c.B, c.Target) && !this->CollapseAtFallback(c.A, c.B)))
     {
       ++this->Rejected; // not retried until its neighbourhood changes
       continue;

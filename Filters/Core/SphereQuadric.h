@@ -14,65 +14,78 @@
 
 namespace medialaxis
 {
-struct SphereQuadric
+/// Stored packed: the 10 distinct entries of the symmetric A, then B and C,
+/// 15 doubles padded to 16 and aligned so that one quadric spans exactly two
+/// cache lines (the simplifier adds and subtracts millions of them).
+struct alignas(64) SphereQuadric
 {
-  std::array<double, 16> A{}; // 4 x 4, row-major, symmetric
-  std::array<double, 4> B{};  // energy = x^T A x - 2 B^T x + C
-  double C = 0.0;
+  // energy = x^T A x - 2 B^T x + C, A symmetric 4 x 4.
+  std::array<double, 16> Data{};
+
+  static constexpr int Packed(int i, int j)
+  {
+    return i <= j ? i * 4 - i * (i + 1) / 2 + j : j * 4 - j * (j + 1) / 2 + i;
+  }
+  double A(int i, int j) const { return this->Data[Packed(i, j)]; }
+  double& A(int i, int j) { return this->Data[Packed(i, j)]; }
+  double B(int i) const { return this->Data[10 + i]; }
+  double& B(int i) { return this->Data[10 + i]; }
+  double C() const { return this->Data[14]; }
+  double& C() { return this->Data[14]; }
 
   void AddFacet(const Point3& n, double offset, double area)
   {
     const double w[4] = { n[0], n[1], n[2], 1.0 };
     for (int i = 0; i < 4; ++i)
     {
-      for (int j = 0; j < 4; ++j)
+      for (int j = i; j < 4; ++j)
       {
-        this->A[4 * i + j] += area * w[i] * w[j];
+        this->A(i, j) += area * w[i] * w[j];
       }
-      this->B[i] += area * offset * w[i];
+      this->B(i) += area * offset * w[i];
     }
-    this->C += area * offset * offset;
+    this->C() += area * offset * offset;
   }
 
   SphereQuadric& operator+=(const SphereQuadric& o)
   {
-    for (int k = 0; k < 16; ++k)
+    for (int k = 0; k < 15; ++k)
     {
-      this->A[k] += o.A[k];
+      this->Data[k] += o.Data[k];
     }
-    for (int k = 0; k < 4; ++k)
-    {
-      this->B[k] += o.B[k];
-    }
-    this->C += o.C;
     return *this;
   }
 
   SphereQuadric& operator-=(const SphereQuadric& o)
   {
-    for (int k = 0; k < 16; ++k)
+    for (int k = 0; k < 15; ++k)
     {
-      this->A[k] -= o.A[k];
+      this->Data[k] -= o.Data[k];
     }
-    for (int k = 0; k < 4; ++k)
-    {
-      this->B[k] -= o.B[k];
-    }
-    this->C -= o.C;
     return *this;
+  }
+
+  /// The gradient of the energy is 2 (A x - B).
+  std::array<double, 4> Times(const std::array<double, 4>& x) const
+  {
+    std::array<double, 4> y{};
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        y[i] += this->A(i, j) * x[j];
+      }
+    }
+    return y;
   }
 
   double Evaluate(const std::array<double, 4>& x) const
   {
-    double e = this->C;
+    const std::array<double, 4> ax = this->Times(x);
+    double e = this->C();
     for (int i = 0; i < 4; ++i)
     {
-      double row = 0.0;
-      for (int j = 0; j < 4; ++j)
-      {
-        row += this->A[4 * i + j] * x[j];
-      }
-      e += x[i] * row - 2.0 * this->B[i] * x[i];
+      e += x[i] * ax[i] - 2.0 * this->B(i) * x[i];
     }
     return e;
   }

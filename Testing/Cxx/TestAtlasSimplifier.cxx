@@ -11,6 +11,7 @@
 #include "vtkAnalyticShapeSource.h"
 #include "vtkAtlasMedialAxisSimplifier.h"
 #include "vtkBlueNoiseSurfaceSampler.h"
+#include "vtkExtractMedialAtlas.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkRestrictedVoronoiDiagram.h"
 #include "vtkVoronoiMedialAxis.h"
@@ -377,4 +378,81 @@ TEST(AtlasMedialAxisSimplifierFilter, BadInputsGiveClearErrors)
   negative->DeepCopy(voronoi->GetOutput());
   negative->GetPointData()->GetArray("Radius")->SetComponent(0, 0, -1.0);
   EXPECT_NE(run(negative, rvd->GetOutput(0)).find("negative"), std::string::npos);
+}
+
+TEST(ExtractMedialAtlasFilter, ShowsExactlyTheCellsOfOneVertex)
+{
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToCapsule();
+  shape->SetResolution(16);
+  test::InitialMedialPipeline pipeline(shape->GetOutputPort(), 2000);
+  vtkNew<vtkAtlasMedialAxisSimplifier> simplifier;
+  simplifier->SetInputConnection(0, pipeline.Voronoi->GetOutputPort());
+  simplifier->SetInputConnection(1, pipeline.Rvd->GetOutputPort(0));
+  simplifier->SetTargetNumberOfVertices(30);
+  simplifier->PreserveSharpFeaturesOff();
+  vtkNew<vtkExtractMedialAtlas> extractor;
+  extractor->SetInputConnection(0, simplifier->GetOutputPort(0));
+  extractor->SetInputConnection(1, simplifier->GetOutputPort(1));
+  simplifier->Update();
+  vtkPolyData* mat = simplifier->GetOutput();
+  vtkPolyData* cells = vtkPolyData::SafeDownCast(simplifier->GetOutputDataObject(1));
+  vtkPolyData* sitesOut = vtkPolyData::SafeDownCast(pipeline.Rvd->GetOutputDataObject(1));
+  vtkDataArray* cellArea = sitesOut->GetPointData()->GetArray("CellArea");
+  ASSERT_NE(cellArea, nullptr);
+  std::vector<Index> offsets, sites;
+  ASSERT_EQ(GetAtlasArrays(mat, offsets, sites), "");
+
+  double totalArea = 0.0;
+  for (vtkIdType v = 0; v < mat->GetNumberOfPoints(); ++v)
+  {
+    extractor->SetMedialVertexId(v);
+    extractor->Update();
+    vtkPolyData* out = extractor->GetOutput();
+    std::vector<Index> atlas(sites.begin() + offsets[v], sites.begin() + offsets[v + 1]);
+    std::sort(atlas.begin(), atlas.end());
+    ASSERT_FALSE(atlas.empty());
+    // Every polygon of the RVD whose site is in the Atlas, and no other.
+    vtkDataArray* siteIds = cells->GetCellData()->GetArray("SiteId");
+    vtkIdType expected = 0;
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+    {
+      expected += std::binary_search(
+        atlas.begin(), atlas.end(), static_cast<Index>(siteIds->GetComponent(c, 0)));
+    }
+    EXPECT_EQ(out->GetNumberOfCells(), expected);
+    vtkDataArray* outSites = out->GetCellData()->GetArray("SiteId");
+    ASSERT_NE(outSites, nullptr);
+    for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+    {
+      EXPECT_TRUE(std::binary_search(
+        atlas.begin(), atlas.end(), static_cast<Index>(outSites->GetComponent(c, 0))));
+    }
+    // Its area is that of the Atlas' restricted Voronoi cells.
+    double atlasArea = 0.0;
+    for (Index s : atlas)
+    {
+      atlasArea += cellArea->GetComponent(s, 0);
+    }
+    const double area = out->GetFieldData()->GetArray("AtlasArea")->GetComponent(0, 0);
+    EXPECT_NEAR(area, atlasArea, 1e-9 * atlasArea);
+    EXPECT_EQ(out->GetFieldData()->GetArray("SphereRadius")->GetComponent(0, 0),
+      mat->GetPointData()->GetArray("Radius")->GetComponent(v, 0));
+    totalArea += area;
+  }
+  // Atlases overlap, and together they cover the whole surface.
+  double surfaceArea = 0.0;
+  for (vtkIdType s = 0; s < cellArea->GetNumberOfTuples(); ++s)
+  {
+    surfaceArea += cellArea->GetComponent(s, 0);
+  }
+  EXPECT_GE(totalArea, surfaceArea * (1.0 - 1e-9));
+
+  // An id past the last vertex is an error that says which ids exist.
+  vtkNew<test::ErrorCatcher> errors;
+  extractor->AddObserver(vtkCommand::ErrorEvent, errors);
+  extractor->SetMedialVertexId(30);
+  extractor->Update();
+  EXPECT_EQ(extractor->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_NE(errors->Last.find("from 0 to 29"), std::string::npos) << errors->Last;
 }

@@ -91,4 +91,10 @@ small = servermanager.Fetch(simplified, idx=0)
 check(small.GetNumberOfPoints() == 100, "expected 100 spheres, got %d" % small.GetNumberOfPoints())
 colored = servermanager.Fetch(simplified, idx=1)
 check(colored.GetCellData().GetArray("MedialVertexId") is not None, "no correspondence output")
+# The whole Atlas of one picked sphere.
+atlas = ExtractMedialAtlas(Input=OutputPort(simplified, 0),
+                           RestrictedVoronoiDiagram=OutputPort(simplified, 1), MedialVertexId=7)
+cells = servermanager.Fetch(atlas)
+check(cells.GetNumberOfCells() > 0, "the Atlas of sphere 7 is empty")
+check(cells.GetFieldData().GetArray("AtlasArea").GetValue(0) > 0, "the Atlas has no area")
 print("pvbatch plugin test passed")

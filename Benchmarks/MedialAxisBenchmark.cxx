@@ -12,6 +12,7 @@
 #include "AnalyticShapes.h"
 #include "BlueNoiseSampler.h"
 #include "AtlasSimplifier.h"
+#include "MedialMeshQuality.h"
 #include "Parallel.h"
 #include "RestrictedVoronoi.h"
 #include "VoronoiMedialAxis.h"
@@ -130,6 +131,13 @@ std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples, st
     voronoi.Mesh.Centers.size(), voronoi.Mesh.Faces.size(), EdgesNotOnFaces(voronoi.Mesh).size(),
     static_cast<long long>(EulerCharacteristic(voronoi.Mesh)), voronoi.DelaunayCells,
     voronoi.AmbiguousInsideTests);
+  {
+    const MedialMeshQuality q0 = MeasureQuality(voronoi.Mesh);
+    std::printf("  initial MAT quality: %zu degenerate, %zu folded triangles (%zu folds); mean min "
+                "angle %.1f deg, %.1f%% below 30 deg, mean Q %.3f\n",
+      q0.DegenerateTriangles, q0.FoldedTriangles, q0.FoldedEdges, q0.MeanMinimumAngle,
+      q0.PercentMinimumAngleBelow30, q0.MeanQuality);
+  }
   AtlasMedialMesh initial;
   initial.Mesh = std::move(voronoi.Mesh);
   initial.AtlasOffsets = std::move(voronoi.AtlasOffsets);
@@ -144,10 +152,16 @@ std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples, st
   }));
   const MedialMesh& m = simplified.Medial.Mesh;
   std::printf("  simplified MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "
-              "%zu collapses, %zu rejected, %zu past the link condition\n",
+              "%zu collapses, %zu rejected, %zu past the link condition, %zu past the fold guard\n",
     m.Centers.size(), m.Faces.size(), EdgesNotOnFaces(m).size(),
     static_cast<long long>(EulerCharacteristic(m)), simplified.Collapses,
-    simplified.RejectedCollapses, simplified.RelaxedCollapses);
+    simplified.RejectedCollapses, simplified.RelaxedCollapses, simplified.FoldingAllowedCollapses);
+  const MedialMeshQuality quality = MeasureQuality(m);
+  std::printf("  simplified MAT quality: %zu degenerate, %zu folded triangles (%zu folds), %s; "
+              "mean min angle %.1f deg, %.1f%% below 30 deg, mean Q %.3f\n",
+    quality.DegenerateTriangles, quality.FoldedTriangles, quality.FoldedEdges,
+    ValidateMedialMesh(m).IsValid() ? "valid" : ValidateMedialMesh(m).Message.c_str(),
+    quality.MeanMinimumAngle, quality.PercentMinimumAngleBelow30, quality.MeanQuality);
   return stages;
 }
 

@@ -56,17 +56,19 @@ std::string ReadRvd(vtkPolyData* input, medialaxis::RestrictedVoronoiDiagram& rv
   {
     positions->GetTuple(i, sites[i].data());
   }
-  for (const char* name : { "SiteConvexFeature", "SiteConcaveFeature" })
+  for (auto [name, flags] :
+    { std::pair<const char*, std::vector<std::uint8_t>*>{ "SiteConvexFeature", &rvd.ConvexFeature },
+      std::pair<const char*, std::vector<std::uint8_t>*>{
+        "SiteConcaveFeature", &rvd.ConcaveFeature } })
   {
-    auto& flags = name[4] == 'C' && name[6] == 'n' && name[7] == 'v' ? rvd.ConvexFeature : rvd.ConcaveFeature;
     if (vtkDataArray* a = input->GetFieldData()->GetArray(name))
     {
       if (a->GetNumberOfTuples() == ns)
       {
-        flags.resize(static_cast<std::size_t>(ns));
+        flags->resize(static_cast<std::size_t>(ns));
         for (vtkIdType i = 0; i < ns; ++i)
         {
-          flags[i] = a->GetComponent(i, 0) != 0.0 ? 1 : 0;
+          (*flags)[i] = a->GetComponent(i, 0) != 0.0 ? 1 : 0;
         }
       }
     }
@@ -141,7 +143,8 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   {
     if (problem.empty() && (s < 0 || static_cast<std::size_t>(s) >= sites.size()))
     {
-      problem = "Atlas site " + std::to_string(s) + " is not a site of the restricted Voronoi "
+      problem = "Atlas site " + std::to_string(s) +
+        " is not a site of the restricted Voronoi "
         "diagram on input port 1 (they must come from the same sampling)";
     }
   }
@@ -163,7 +166,8 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.StrictTopologyGuard = this->StrictTopologyGuard;
   options.PreserveSharpFeatures = this->PreserveSharpFeatures;
   options.InvaginatedTerm = this->InvaginatedTerm;
-  options.Progress = [this](double f) {
+  options.Progress = [this](double f)
+  {
     this->UpdateProgress(0.05 + 0.9 * f);
     return !this->GetAbortExecute();
   };
@@ -212,9 +216,12 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
     }
   }
   output->GetCellData()->AddArray(stability);
-  for (const auto& [name, value] : { std::pair<const char*, std::size_t>{ "Collapses", result.Collapses },
-         { "RejectedCollapses", result.RejectedCollapses }, { "RelaxedCollapses", result.RelaxedCollapses }, { "MergedFaces", result.MergedFaces },
-         { "SnappedVertices", result.SnappedVertices } })
+  for (const auto& [name, value] :
+    { std::pair<const char*, std::size_t>{ "Collapses", result.Collapses },
+      { "RejectedCollapses", result.RejectedCollapses },
+      { "RelaxedCollapses", result.RelaxedCollapses }, { "MergedFaces", result.MergedFaces },
+      { "SnappedVertices", result.SnappedVertices }, { "ForcedSnaps", result.ForcedSnaps },
+      { "FoldingAllowedCollapses", result.FoldingAllowedCollapses } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }
@@ -239,7 +246,8 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   for (vtkIdType c = 0; c < rvdIn->GetNumberOfCells(); ++c)
   {
     const auto site = static_cast<vtkIdType>(siteIds->GetComponent(c, 0));
-    vertexIds->SetValue(c, site >= 0 && site < static_cast<vtkIdType>(sites.size()) ? vertexOfSite[site] : -1);
+    vertexIds->SetValue(
+      c, site >= 0 && site < static_cast<vtkIdType>(sites.size()) ? vertexOfSite[site] : -1);
   }
   vtkNew<vtkCellData> cellData;
   cellData->ShallowCopy(rvdIn->GetCellData());

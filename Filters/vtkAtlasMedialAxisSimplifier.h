@@ -16,12 +16,16 @@
  * over the merged one-ring is smallest (closed form; L-BFGS when cells on
  * concave edges use the distance-to-site term). Edges are collapsed in order
  * of that error times a sigmoid of their stability ratio, so spikes go first.
- * A collapse that would create a duplicate, degenerate or flipped triangle
- * is refused (and retried only after its neighbourhood changes); below
+ * A collapse that would create a duplicate, degenerate or flipped triangle,
+ * or fold two triangles onto each other (dihedral angle below 10 degrees),
+ * is refused (and retried only after its neighbourhood changes); only when
+ * no other collapse is left (tubes whose thin sheets must shrink to a curve)
+ * are folds allowed, counted in field data FoldingAllowedCollapses. Below
  * TopologyGuardVertexCount vertices the link condition also guards the
  * topology. With PreserveSharpFeatures, feature vertices (Atlas on a sharp
  * convex edge, none on a concave one) are first snapped to their edge with
- * radius 0 and stay there.
+ * radius 0 and stay there; snaps that fold or flatten a triangle are made
+ * last and the collapses around them first (field data ForcedSnaps).
  *
  * Output port 0: the simplified medial mesh (input units) with `Radius`,
  * the final Atlas (`AtlasSites`, `AtlasOffsets`, `AtlasCount`), point data

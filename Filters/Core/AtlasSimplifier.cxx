@@ -2,6 +2,7 @@
 #include "AtlasSimplifier.h"
 
 #include "CollapseQueue.h"
+#include "MedialMeshQuality.h"
 #include "SphereQuadric.h"
 #include "Vec3.h"
 
@@ -82,6 +83,14 @@ void AddLaplacian(
   q.C() += w * sumSquares;
 }
 
+// Zero area up to rounding: twice the area at most 1e-10 x the longest edge
+// squared (the sine of the largest angle below 1e-10).
+bool IsDegenerate(const Point3& p, const Point3& q, const Point3& r)
+{
+  const double longest = std::max({ Distance2(p, q), Distance2(q, r), Distance2(r, p) });
+  return !(Norm(Cross(q - p, r - p)) > 1e-10 * longest);
+}
+
 // Nonlinear fidelity of Eq. 11 plus the quadratic part, for L-BFGS.
 struct InvaginatedEnergy
 {
@@ -149,8 +158,32 @@ private:
   bool Collapse(Index a, Index b, const Sphere& target);
   bool CollapseAtFallback(Index a, Index b);
   bool LinkConditionHolds(Index a, Index b) const;
-  void Snap(Index v);
+  bool CreatesFold(Index a, Index b, const Point3& newPosition);
+  std::size_t FoldsAroundMerged(Index a, Index b, const Point3& newPosition);
+  std::size_t CountFolds(
+    const std::vector<std::array<Index, 3>>& centre, Index moved, const Point3& movedTo);
+  // Moves feature vertex v onto its sharp edge (r = 0); with keepValid, not
+  // when that would make a zero-area or folded triangle. True if moved.
+  bool Snap(Index v, bool keepValid);
+  bool SnapKeepsValid(Index v, const Point3& target);
+  // Retries the snap of feature vertices off their edge at and around v.
+  void SnapPending(Index v)
+  {
+    if (this->Feature[v] && !this->OnFeature(v))
+    {
+      this->Snap(v, true);
+    }
+    for (Index u : this->Neighbours[v])
+    {
+      if (this->Feature[u] && !this->OnFeature(u))
+      {
+        this->Snap(u, true);
+      }
+    }
+  }
   void UpdateFeature(Index v);
+  // A feature vertex already on its sharp edge (snapped, radius 0).
+  bool OnFeature(Index v) const { return this->Feature[v] && this->Spheres[v][3] == 0.0; }
   void Push(Index a, Index b);
   using Candidate = CollapseQueue<Sphere>::Entry;
   Candidate MakeCandidate(Index a, Index b, std::vector<std::pair<Point3, double>>& anchors) const;
@@ -184,8 +217,13 @@ private:
   std::vector<std::pair<Point3, double>> Anchors;
   std::vector<std::pair<std::array<Index, 3>, Index>> FaceKeys;
   std::vector<Index> MergedAway, MergedNeighbours, MergedAtlas;
+  std::vector<std::array<Index, 3>> CentreBefore, Outer;
+  std::vector<std::array<Index, 4>> EdgeIncidences; // (min, max, apex, centre?)
+  std::vector<std::array<Index, 2>> RingPairs, Spokes;
   std::size_t Rejected = 0, Collapses = 0, Snapped = 0, RelaxedCollapses = 0, Merged = 0;
-  bool Relaxed = false; // the link condition no longer guards collapses
+  bool Relaxed = false;  // the link condition no longer guards collapses
+  bool FoldGuard = true; // collapses may not fold triangles onto each other
+  std::size_t FoldingAllowedCollapses = 0, ForcedSnaps = 0;
 };
 
 void Simplifier::Setup(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
@@ -383,7 +421,7 @@ Placement Simplifier::Solve(const SphereQuadric& q,
     }
   };
 
-  const bool aFeature = this->Feature[a], bFeature = this->Feature[b];
+  const bool aFeature = this->OnFeature(a), bFeature = this->OnFeature(b);
   if (this->Options.PreserveSharpFeatures && (aFeature || bFeature) && anchors.empty())
   {
     // Eq. 18: discrete candidates with zero radius.
@@ -658,9 +696,7 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
       const Point3 n1 = Cross(moved[1] - moved[0], moved[2] - moved[0]);
       const double l0 = std::max({ Distance2(before[0], before[1]), Distance2(before[1], before[2]),
         Distance2(before[2], before[0]) });
-      const double l1 = std::max({ Distance2(moved[0], moved[1]), Distance2(moved[1], moved[2]),
-        Distance2(moved[2], moved[0]) });
-      if (!(Norm(n1) > 1e-10 * l1))
+      if (IsDegenerate(moved[0], moved[1], moved[2]))
       {
         return false; // would be degenerate
       }
@@ -681,6 +717,11 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
     {
       mergedAway.push_back(keys[i].second);
     }
+  }
+
+  if (this->FoldGuard && this->CreatesFold(a, b, newPosition))
+  {
+    return false;
   }
 
   // Apply.
@@ -776,6 +817,183 @@ bool Simplifier::Collapse(Index a, Index b, const Sphere& target)
   return true;
 }
 
+// Folded manifold edges among the edges of the `centre` faces, with the
+// faces across them taken from `centre` and this->Outer; vertex `moved` sits
+// at `movedTo`.
+std::size_t Simplifier::CountFolds(
+  const std::vector<std::array<Index, 3>>& centre, Index moved, const Point3& movedTo)
+{
+  auto position = [&](Index v)
+  {
+    return v == moved ? movedTo
+                      : Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
+  };
+  auto& incidences = this->EdgeIncidences;
+  incidences.clear();
+  auto add = [&incidences](const std::vector<std::array<Index, 3>>& faces, Index isCentre)
+  {
+    for (const auto& t : faces)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Index u = t[k], v = t[(k + 1) % 3];
+        incidences.push_back({ std::min(u, v), std::max(u, v), t[(k + 2) % 3], isCentre });
+      }
+    }
+  };
+  add(centre, 1);
+  add(this->Outer, 0);
+  std::sort(incidences.begin(), incidences.end());
+  std::size_t folds = 0;
+  for (std::size_t i = 0; i < incidences.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < incidences.size() && incidences[j][0] == incidences[i][0] &&
+      incidences[j][1] == incidences[i][1])
+    {
+      ++j;
+    }
+    const auto &p = incidences[i], &q = incidences[i + 1];
+    if (j - i == 2 && (p[3] || q[3]) &&
+      IsFold(position(p[0]), position(p[1]), position(p[2]), position(q[2])))
+    {
+      ++folds;
+    }
+    i = j;
+  }
+  return folds;
+}
+
+// Folded edges around a after merging b into it at `newPosition`, from the
+// collapse's face keys. Every face around a is then (a, u, v): spokes (a, u)
+// lie between two such faces, ring edges (u, v) between one and the faces
+// across that do not move. A fast path for the common case (no fold): no
+// sorting, and the pre-collapse state is looked at only when needed.
+std::size_t Simplifier::FoldsAroundMerged(Index a, Index b, const Point3& newPosition)
+{
+  auto position = [this](Index v) {
+    return Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
+  };
+  auto& ring = this->RingPairs;
+  ring.clear();
+  const auto& keys = this->FaceKeys;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+  {
+    if (i > 0 && keys[i].first == keys[i - 1].first)
+    {
+      continue; // merged away
+    }
+    const auto& t = keys[i].first;
+    ring.push_back(t[0] == a ? std::array<Index, 2>{ t[1], t[2] }
+        : t[1] == a          ? std::array<Index, 2>{ t[0], t[2] }
+                             : std::array<Index, 2>{ t[0], t[1] });
+  }
+  // Spoke (a, u) between exactly two faces (a, u, x) and (a, u, y).
+  auto& spokes = this->Spokes;
+  spokes.clear();
+  for (const auto& pair : ring)
+  {
+    spokes.push_back({ pair[0], pair[1] });
+    spokes.push_back({ pair[1], pair[0] });
+  }
+  std::sort(spokes.begin(), spokes.end());
+  std::size_t folds = 0;
+  for (std::size_t i = 0; i < spokes.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < spokes.size() && spokes[j][0] == spokes[i][0])
+    {
+      ++j;
+    }
+    if (j - i == 2 &&
+      IsFold(
+        newPosition, position(spokes[i][0]), position(spokes[i][1]), position(spokes[i + 1][1])))
+    {
+      ++folds;
+    }
+    i = j;
+  }
+  for (std::size_t i = 0; i < ring.size(); ++i)
+  {
+    // Ring edge (u, v) between (a, u, v) and the faces across it.
+    const Index u = ring[i][0], v = ring[i][1];
+    std::size_t count = 0;
+    Index y = -1;
+    for (Index f : this->VertexFaces[u])
+    {
+      const auto& o = this->Faces[f];
+      const bool hasV = o[0] == v || o[1] == v || o[2] == v;
+      const bool hasAB = o[0] == a || o[1] == a || o[2] == a || o[0] == b || o[1] == b || o[2] == b;
+      if (this->FaceAlive[f] && hasV && !hasAB)
+      {
+        ++count;
+        y = o[0] != u && o[0] != v ? o[0] : (o[1] != u && o[1] != v ? o[1] : o[2]);
+      }
+    }
+    if (count == 1 && IsFold(position(u), position(v), newPosition, position(y)))
+    {
+      ++folds;
+    }
+  }
+  return folds;
+}
+
+// Whether merging b into a at `newPosition` folds two triangles onto each
+// other that were not folded before. (A face's own normal may turn by less
+// than the flip test allows and still fold over its neighbour; and the
+// flip test is skipped on spike edges.)
+bool Simplifier::CreatesFold(Index a, Index b, const Point3& newPosition)
+{
+  const std::size_t foldsAfter = this->FoldsAroundMerged(a, b, newPosition);
+  if (foldsAfter == 0)
+  {
+    return false;
+  }
+  // Rare: were there as many folds before (in a medial mesh given as input)?
+  auto has = [](const std::array<Index, 3>& t, Index v)
+  { return t[0] == v || t[1] == v || t[2] == v; };
+  auto& before = this->CentreBefore;
+  before.clear();
+  for (Index v : { a, b })
+  {
+    for (Index f : this->VertexFaces[v])
+    {
+      const auto& t = this->Faces[f];
+      if (this->FaceAlive[f] && !(v == b && has(t, a)))
+      {
+        before.push_back(t);
+      }
+    }
+  }
+  // The faces across the ring edges (those without a or b).
+  auto& outer = this->Outer;
+  outer.clear();
+  for (const auto& t : before)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index u = t[k], v = t[(k + 1) % 3];
+      if (u == a || u == b || v == a || v == b)
+      {
+        continue;
+      }
+      for (Index f : this->VertexFaces[u])
+      {
+        const auto& o = this->Faces[f];
+        if (this->FaceAlive[f] && has(o, v) && !has(o, a) && !has(o, b))
+        {
+          std::array<Index, 3> sorted = o;
+          std::sort(sorted.begin(), sorted.end());
+          outer.push_back(sorted);
+        }
+      }
+    }
+  }
+  std::sort(outer.begin(), outer.end());
+  outer.erase(std::unique(outer.begin(), outer.end()), outer.end());
+  return foldsAfter > this->CountFolds(before, -1, newPosition);
+}
+
 // When the optimal sphere would break validity: the endpoints and the
 // midpoint, cheapest first, with each one's own radius (0 for feature ones).
 bool Simplifier::CollapseAtFallback(Index a, Index b)
@@ -784,11 +1002,11 @@ bool Simplifier::CollapseAtFallback(Index a, Index b)
   Sphere candidates[3] = { pa, pb,
     { 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]),
       0.5 * (pa[3] + pb[3]) } };
-  if (this->Feature[a] && !this->Feature[b])
+  if (this->OnFeature(a) && !this->OnFeature(b))
   {
     candidates[1] = candidates[2] = pa;
   }
-  else if (this->Feature[b] && !this->Feature[a])
+  else if (this->OnFeature(b) && !this->OnFeature(a))
   {
     candidates[0] = candidates[2] = pb;
   }
@@ -814,7 +1032,36 @@ bool Simplifier::CollapseAtFallback(Index a, Index b)
 }
 
 // Eq. 17: a feature vertex moves onto its sharp edge with r = 0.
-void Simplifier::Snap(Index v)
+// Feature vertices on one straight edge are collinear: a triangle of three
+// of them would have zero area, and a snap can fold a triangle over its
+// neighbour.
+bool Simplifier::SnapKeepsValid(Index v, const Point3& target)
+{
+  auto& faces = this->FaceKeys;
+  faces.clear();
+  for (Index f : this->VertexFaces[v])
+  {
+    Point3 p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index u = this->Faces[f][k];
+      p[k] =
+        u == v ? target : Point3{ this->Spheres[u][0], this->Spheres[u][1], this->Spheres[u][2] };
+    }
+    if (IsDegenerate(p[0], p[1], p[2]))
+    {
+      return false;
+    }
+    std::array<Index, 3> sorted = this->Faces[f];
+    std::sort(sorted.begin(), sorted.end());
+    faces.emplace_back(sorted, f);
+  }
+  std::sort(faces.begin(), faces.end());
+  const Point3 current{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
+  return this->FoldsAroundMerged(v, -1, target) <= this->FoldsAroundMerged(v, -1, current);
+}
+
+bool Simplifier::Snap(Index v, bool keepValid)
 {
   SphereQuadric q = this->AtlasQuadric[v];
   Point3 sum{ 0, 0, 0 };
@@ -827,10 +1074,16 @@ void Simplifier::Snap(Index v)
   Eigen::Vector3d x;
   if (!SolveQuadric<3>(q, x))
   {
-    return;
+    return false;
+  }
+  const Point3 target{ x[0], x[1], x[2] };
+  if (keepValid && !this->SnapKeepsValid(v, target))
+  {
+    return false;
   }
   this->Spheres[v] = { x[0], x[1], x[2], 0.0 };
   ++this->Snapped;
+  return true;
 }
 
 void Simplifier::PushAllEdges()
@@ -896,6 +1149,8 @@ bool Simplifier::CollapseUntil(std::size_t target, const std::function<bool(std:
     }
     ++this->Collapses;
     this->RelaxedCollapses += this->Relaxed ? 1 : 0;
+    this->FoldingAllowedCollapses += this->FoldGuard ? 0 : 1;
+    this->SnapPending(c.A);
     for (Index u : this->Neighbours[c.A])
     {
       this->Push(c.A, u);
@@ -918,17 +1173,36 @@ AtlasSimplifierResult Simplifier::Run()
   const std::size_t nv = this->Spheres.size();
   auto report = [this](double f) { return !this->Options.Progress || this->Options.Progress(f); };
 
+  // Eq. 17: every feature vertex onto its sharp edge. First those whose snap
+  // keeps the mesh valid; then the rest anyway (a feature vertex off its
+  // edge would spoil the boundary), and the edges around those are collapsed
+  // first, which removes most of the zero-area or folded triangles they make.
+  std::vector<Index> forced;
   if (this->Options.PreserveSharpFeatures)
   {
     for (std::size_t v = 0; v < nv; ++v)
     {
-      if (this->Feature[v])
+      if (this->Feature[v] && !this->Snap(static_cast<Index>(v), true))
       {
-        this->Snap(static_cast<Index>(v));
+        forced.push_back(static_cast<Index>(v));
       }
     }
+    for (Index v : forced)
+    {
+      this->Snap(v, false);
+    }
   }
+  this->ForcedSnaps = forced.size();
   this->PushAllEdges();
+  for (Index v : forced)
+  {
+    for (Index u : this->Neighbours[v])
+    {
+      Candidate c = this->MakeCandidate(v, u, this->Anchors);
+      c.Cost = -1.0; // before any other collapse
+      this->Queue.Push(c);
+    }
+  }
   if (!report(0.1))
   {
     result.Aborted = true;
@@ -943,6 +1217,20 @@ AtlasSimplifierResult Simplifier::Run()
   {
     result.Aborted = true;
     return result;
+  }
+  // Stalled because every remaining collapse would fold triangles onto each
+  // other: where a tube's thin sheets must shrink to a curve, the last
+  // strips of sliver triangles cannot collapse otherwise. Go on without the
+  // fold guard and count those collapses.
+  if (this->AliveCount > target)
+  {
+    this->FoldGuard = false;
+    this->PushAllEdges();
+    if (!this->CollapseUntil(target, progress))
+    {
+      result.Aborted = true;
+      return result;
+    }
   }
   // Stalled below the topology guard (no collapse keeps the link condition,
   // as in a contractible but non-collapsible "foam" of sheets): unless the
@@ -959,9 +1247,11 @@ AtlasSimplifierResult Simplifier::Run()
     }
   }
   result.Medial = this->Output();
+  result.ForcedSnaps = this->ForcedSnaps;
   result.Collapses = this->Collapses;
   result.RejectedCollapses = this->Rejected;
   result.RelaxedCollapses = this->RelaxedCollapses;
+  result.FoldingAllowedCollapses = this->FoldingAllowedCollapses;
   result.MergedFaces = this->Merged;
   result.SnappedVertices = this->Snapped;
   report(1.0);

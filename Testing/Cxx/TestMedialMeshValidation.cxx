@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The shared medial-mesh validity check, on plain meshes and on poly data.
 #include "MedialMesh.h"
+#include "MedialMeshQuality.h"
 #include "vtkMedialMeshConversion.h"
 
 #include "vtkCellArray.h"
@@ -10,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 using namespace medialaxis;
@@ -104,4 +106,53 @@ TEST(MedialMeshValidation, PolyDataContract)
   bad->SetNumberOfTuples(5);
   twoComponents->GetPointData()->AddArray(bad);
   EXPECT_NE(ValidateMedialPolyData(twoComponents).find("one component"), std::string::npos);
+}
+
+TEST(MedialMeshQuality, AnglesQualityDegenerateAndFolds)
+{
+  using medialaxis::MedialMesh;
+  const double h = std::sqrt(3.0) / 2.0;
+  // Two equilateral triangles sharing the edge 0-1, flat: no fold, Q = 1.
+  MedialMesh flat;
+  flat.Centers = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, h, 0 }, { 0.5, -h, 0 } };
+  flat.Radii.assign(4, 0.1);
+  flat.Faces = { { 0, 1, 2 }, { 1, 0, 3 } };
+  medialaxis::MedialMeshQuality q = medialaxis::MeasureQuality(flat);
+  EXPECT_EQ(q.Triangles, 2u);
+  EXPECT_EQ(q.FoldedEdges, 0u);
+  EXPECT_EQ(q.DegenerateTriangles, 0u);
+  EXPECT_NEAR(q.MeanMinimumAngle, 60.0, 1e-9);
+  EXPECT_NEAR(q.MeanQuality, 1.0, 1e-12);
+  EXPECT_EQ(q.PercentMinimumAngleBelow30, 0.0);
+
+  // A right angle between the two (a medial junction-like crease): no fold.
+  MedialMesh crease = flat;
+  crease.Centers[3] = { 0.5, 0, h };
+  EXPECT_EQ(medialaxis::MeasureQuality(crease).FoldedEdges, 0u);
+  // The second triangle turned back onto the first (5 degrees apart): a fold
+  // of both triangles, whatever the order of their vertices.
+  MedialMesh folded = flat;
+  const double t = 5.0 * 3.14159265358979323846 / 180.0;
+  folded.Centers[3] = { 0.5, h * std::cos(t), h * std::sin(t) };
+  for (const auto& second : { std::array<medialaxis::Index, 3>{ 1, 0, 3 },
+         std::array<medialaxis::Index, 3>{ 0, 1, 3 }, std::array<medialaxis::Index, 3>{ 3, 1, 0 } })
+  {
+    folded.Faces[1] = second;
+    q = medialaxis::MeasureQuality(folded);
+    EXPECT_EQ(q.FoldedEdges, 1u);
+    EXPECT_EQ(q.FoldedTriangles, 2u);
+  }
+  // 15 degrees apart is a sharp crease, not a fold.
+  const double wide = 15.0 * 3.14159265358979323846 / 180.0;
+  folded.Centers[3] = { 0.5, h * std::cos(wide), h * std::sin(wide) };
+  EXPECT_EQ(medialaxis::MeasureQuality(folded).FoldedEdges, 0u);
+  // A third triangle on the edge makes it non-manifold: folds are not
+  // defined there. A collinear triangle is degenerate and left out.
+  folded.Centers.push_back({ 2, 0, 0 });
+  folded.Radii.push_back(0.1);
+  folded.Faces.push_back({ 0, 1, 4 });
+  q = medialaxis::MeasureQuality(folded);
+  EXPECT_EQ(q.DegenerateTriangles, 1u);
+  EXPECT_EQ(q.FoldedEdges, 0u);
+  EXPECT_EQ(q.Triangles, 3u);
 }

@@ -5,6 +5,7 @@
 #include "TestHelpers.h"
 #include "AtlasSimplifier.h"
 #include "BlueNoiseSampler.h"
+#include "MedialMeshQuality.h"
 #include "RestrictedVoronoi.h"
 #include "VoronoiMedialAxis.h"
 #include "vtkMedialSurfaceValidator.h"
@@ -252,24 +253,27 @@ TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
   EXPECT_EQ(small.Centers.size(), 1000u) << name;
   EXPECT_TRUE(medialaxis::ValidateMedialMesh(small).IsValid())
     << name << ": " << medialaxis::ValidateMedialMesh(small).Message;
-  std::size_t degenerate = 0;
-  for (const auto& t : small.Faces)
+  // No zero-area triangle and no two triangles folded onto each other. On
+  // CAD models, snapping feature vertices onto sharp edges (paper Eq. 17)
+  // can fold a few triangles that no later collapse repairs: counted, and
+  // held to a small share until that is solved.
+  const medialaxis::MedialMeshQuality quality = medialaxis::MeasureQuality(small);
+  EXPECT_EQ(quality.DegenerateTriangles, 0u) << name;
+  std::cout << name << ": " << quality.FoldedTriangles << " folded triangles of "
+            << quality.Triangles << "\n";
+  if (expected.Cad)
   {
-    double e1[3], e2[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      e1[k] = small.Centers[t[1]][k] - small.Centers[t[0]][k];
-      e2[k] = small.Centers[t[2]][k] - small.Centers[t[0]][k];
-    }
-    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-      e1[0] * e2[1] - e1[1] * e2[0] };
-    degenerate += (n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0) ? 0 : 1;
+    EXPECT_LE(quality.FoldedTriangles, quality.Triangles / 50) << name;
   }
-  EXPECT_EQ(degenerate, 0u) << name;
+  else
+  {
+    EXPECT_EQ(quality.FoldedTriangles, 0u) << name;
+  }
   const long long simplifiedChi = medialaxis::EulerCharacteristic(small);
   std::cout << name << ": simplified to " << small.Centers.size() << " vertices, Euler characteristic "
             << simplifiedChi << ", " << simplified.MergedFaces << " bubbles closed, "
-            << simplified.RelaxedCollapses << " collapses past the link condition\n";
+            << simplified.RelaxedCollapses << " collapses past the link condition, "
+            << simplified.FoldingAllowedCollapses << " past the fold guard\n";
   if (simplified.RelaxedCollapses == 0)
   {
     EXPECT_EQ(simplifiedChi, chi - static_cast<long long>(simplified.MergedFaces)) << name;

@@ -7,7 +7,7 @@ import tempfile
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
 
-plugin, data_dir = sys.argv[1], sys.argv[2]
+plugin, data_dir, mesh_dir = sys.argv[1], sys.argv[2], sys.argv[3]
 LoadPlugin(plugin, remote=False, ns=globals())
 
 
@@ -97,4 +97,20 @@ atlas = ExtractMedialAtlas(Input=OutputPort(simplified, 0),
 cells = servermanager.Fetch(atlas)
 check(cells.GetNumberOfCells() > 0, "the Atlas of sphere 7 is empty")
 check(cells.GetFieldData().GetArray("AtlasArea").GetValue(0) > 0, "the Atlas has no area")
+# The one-click filter on a real CAD part.
+fandisk = os.path.join(mesh_dir, "fandisk.off")
+if os.path.exists(fandisk):
+    part = OpenDataFile(fandisk)
+    structural = StructuralMedialAxis(Input=part, NumberOfSamples=5000,
+                                      TargetNumberOfVertices=500, PreserveSharpFeatures=1)
+    structural.UpdatePipeline()
+    result = servermanager.Fetch(structural, idx=0)
+    check(result.GetNumberOfPoints() == 500, "expected 500 spheres, got %d" % result.GetNumberOfPoints())
+    check(result.GetNumberOfPolys() > 0, "the medial axis of fandisk has no slabs")
+    check(result.GetFieldData().GetArray("TotalSeconds").GetValue(0) > 0, "no stage times")
+    check(result.GetFieldData().GetArray("Sites").GetValue(0) == 5000, "wrong number of sites")
+    corr = servermanager.Fetch(structural, idx=1)
+    check(corr.GetCellData().GetArray("MedialVertexId") is not None, "no correspondence output")
+else:
+    print("skipped the one-click filter: %s not found" % fandisk)
 print("pvbatch plugin test passed")

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The one-click filter: the same result as the chain of stage filters, its
+// presets, per-stage times and counts, progress, abort and stage errors.
+#include "TestHelpers.h"
+#include "vtkAnalyticShapeSource.h"
+#include "vtkAtlasMedialAxisSimplifier.h"
+#include "vtkMedialMeshConversion.h"
+#include "vtkStructuralMedialAxis.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+using namespace medialaxis;
+
+namespace
+{
+double FieldValue(vtkPolyData* data, const char* name)
+{
+  vtkDataArray* a = data->GetFieldData()->GetArray(name);
+  return a ? a->GetComponent(0, 0) : -1.0;
+}
+
+struct ProgressLog
+{
+  std::vector<double> Values;
+  double AbortAt = 2.0;
+  static void Record(vtkObject* caller, unsigned long, void* clientData, void* callData)
+  {
+    auto* self = static_cast<ProgressLog*>(clientData);
+    self->Values.push_back(*static_cast<double*>(callData));
+    if (self->Values.back() > self->AbortAt)
+    {
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  }
+};
+}
+
+TEST(StructuralMedialAxis, PresetsFollowThePaper)
+{
+  vtkNew<vtkStructuralMedialAxis> filter;
+  EXPECT_EQ(filter->GetNumberOfSamples(), 10000);
+  EXPECT_EQ(filter->GetTargetNumberOfVertices(), 1000);
+  EXPECT_FALSE(filter->GetPreserveSharpFeatures());
+  filter->SetPresetToCAD();
+  EXPECT_EQ(filter->GetNumberOfSamples(), 50000);
+  EXPECT_EQ(filter->GetTargetNumberOfVertices(), 5000);
+  EXPECT_TRUE(filter->GetPreserveSharpFeatures());
+}
+
+TEST(StructuralMedialAxis, SameResultAsTheChainWithTimesCountsAndProgress)
+{
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToRoundedBox();
+  shape->SetFilletRadius(0.2);
+  shape->SetResolution(16);
+
+  vtkNew<vtkStructuralMedialAxis> filter;
+  filter->SetInputConnection(shape->GetOutputPort());
+  filter->SetPresetToCAD();
+  filter->SetNumberOfSamples(4000);
+  filter->SetTargetNumberOfVertices(400);
+  ProgressLog log;
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetCallback(&ProgressLog::Record);
+  progress->SetClientData(&log);
+  filter->AddObserver(vtkCommand::ProgressEvent, progress);
+  filter->Update();
+  vtkPolyData* mat = filter->GetOutput(0);
+
+  // The chain of stage filters with the same parameters.
+  test::InitialMedialPipeline chain(shape->GetOutputPort(), 4000);
+  vtkNew<vtkAtlasMedialAxisSimplifier> simplifier;
+  simplifier->SetInputConnection(0, chain.Voronoi->GetOutputPort());
+  simplifier->SetInputConnection(1, chain.Rvd->GetOutputPort(0));
+  simplifier->SetTargetNumberOfVertices(400);
+  simplifier->PreserveSharpFeaturesOn();
+  simplifier->Update();
+  vtkPolyData* expected = simplifier->GetOutput(0);
+  ASSERT_EQ(mat->GetNumberOfPoints(), 400);
+  ASSERT_EQ(expected->GetNumberOfPoints(), 400);
+  for (vtkIdType i = 0; i < 400; ++i)
+  {
+    double p[3], q[3];
+    mat->GetPoint(i, p);
+    expected->GetPoint(i, q);
+    ASSERT_EQ(p[0], q[0]);
+    ASSERT_EQ(p[1], q[1]);
+    ASSERT_EQ(p[2], q[2]);
+  }
+  EXPECT_EQ(mat->GetNumberOfPolys(), expected->GetNumberOfPolys());
+  EXPECT_EQ(ValidateMedialPolyData(mat), "");
+
+  // Times and counts.
+  double sum = 0.0;
+  for (const char* stage : { "SamplingSeconds", "RestrictedVoronoiSeconds",
+         "VoronoiMedialAxisSeconds", "SimplificationSeconds" })
+  {
+    const double t = FieldValue(mat, stage);
+    EXPECT_GT(t, 0.0) << stage;
+    sum += t;
+  }
+  EXPECT_NEAR(FieldValue(mat, "TotalSeconds"), sum, 1e-12);
+  EXPECT_EQ(FieldValue(mat, "Sites"), 4000.0);
+  EXPECT_EQ(FieldValue(mat, "InitialVertices"),
+    static_cast<double>(chain.Voronoi->GetOutput()->GetNumberOfPoints()));
+  EXPECT_GT(FieldValue(mat, "Collapses"), 0.0);
+  // The correspondence and the sites.
+  vtkPolyData* cells = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));
+  EXPECT_NE(cells->GetCellData()->GetArray("MedialVertexId"), nullptr);
+  EXPECT_EQ(vtkPolyData::SafeDownCast(filter->GetOutputDataObject(2))->GetNumberOfPoints(), 4000);
+
+  // Progress never goes back and ends at 1, through every stage's share.
+  ASSERT_GT(log.Values.size(), 10u);
+  for (std::size_t i = 1; i < log.Values.size(); ++i)
+  {
+    EXPECT_GE(log.Values[i], log.Values[i - 1]);
+  }
+  EXPECT_EQ(log.Values.back(), 1.0);
+  EXPECT_TRUE(std::any_of(log.Values.begin(), log.Values.end(),
+    [](double v) { return v > 0.4 && v < 0.9; })); // inside the simplification
+}
+
+TEST(StructuralMedialAxis, AbortLeavesAnEmptyOutput)
+{
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToTorus();
+  shape->SetResolution(16);
+  vtkNew<vtkStructuralMedialAxis> filter;
+  filter->SetInputConnection(shape->GetOutputPort());
+  filter->SetNumberOfSamples(3000);
+  filter->SetTargetNumberOfVertices(100);
+  ProgressLog log;
+  log.AbortAt = 0.5;
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetCallback(&ProgressLog::Record);
+  progress->SetClientData(&log);
+  filter->AddObserver(vtkCommand::ProgressEvent, progress);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput(0)->GetNumberOfPoints(), 0);
+  EXPECT_LT(log.Values.back(), 1.0);
+}
+
+TEST(StructuralMedialAxis, StageErrorsNameTheStageAndTheDefect)
+{
+  auto run = [](vtkPolyData* surface)
+  {
+    vtkNew<vtkStructuralMedialAxis> filter;
+    vtkNew<test::ErrorCatcher> errors;
+    filter->AddObserver(vtkCommand::ErrorEvent, errors);
+    filter->SetInputData(surface);
+    filter->SetNumberOfSamples(500);
+    filter->SetTargetNumberOfVertices(50);
+    filter->Update();
+    EXPECT_EQ(filter->GetOutput(0)->GetNumberOfPoints(), 0);
+    return errors->Last;
+  };
+  vtkNew<vtkPolyData> empty;
+  EXPECT_NE(run(empty).find("has no polygons"), std::string::npos);
+
+  // A sphere with one triangle missing is open.
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToSphere();
+  shape->SetResolution(8);
+  shape->Update();
+  vtkNew<vtkPolyData> open;
+  open->DeepCopy(shape->GetOutput());
+  open->BuildCells();
+  open->DeleteCell(0);
+  open->RemoveDeletedCells();
+  const std::string message = run(open);
+  EXPECT_NE(
+    message.find("stage Sampling failed: cannot sample: surface is not closed: 3 boundary edges"),
+    std::string::npos)
+    << message;
+}

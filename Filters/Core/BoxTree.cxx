@@ -3,12 +3,7 @@
 
 namespace medialaxis
 {
-namespace
-{
-constexpr std::uint32_t LeafSize = 4;
-}
-
-void BoxTree::Build(const std::vector<Box>& boxes, const std::vector<double>* values)
+void BoxTree::Build(const std::vector<Box>& boxes, const std::vector<double>* values, int leafSize)
 {
   this->Nodes.clear();
   this->Items.resize(boxes.size());
@@ -25,16 +20,17 @@ void BoxTree::Build(const std::vector<Box>& boxes, const std::vector<double>* va
       centres[i][k] = 0.5 * (boxes[i].Lo[k] + boxes[i].Hi[k]);
     }
   }
-  this->Nodes.reserve(2 * boxes.size() / LeafSize + 2);
+  const std::uint32_t leaf = static_cast<std::uint32_t>(std::max(1, leafSize));
+  this->Nodes.reserve(2 * boxes.size() / leaf + 2);
   this->Nodes.emplace_back();
-  this->BuildNodes(boxes, centres, values);
+  this->BuildNodes(boxes, centres, values, leaf);
 }
 
 // Splits at the median of the longest axis of the item centres, without
 // recursion: each task fills one reserved node for a range of Items; an inner
 // node reserves its two children next to each other.
 void BoxTree::BuildNodes(const std::vector<Box>& boxes, const std::vector<Point3>& centres,
-  const std::vector<double>* values)
+  const std::vector<double>* values, std::uint32_t leafSize)
 {
   struct Task
   {
@@ -58,7 +54,7 @@ void BoxTree::BuildNodes(const std::vector<Box>& boxes, const std::vector<Point3
         node.Value = std::max(node.Value, (*values)[item]);
       }
     }
-    if (t.End - t.Begin <= LeafSize)
+    if (t.End - t.Begin <= leafSize)
     {
       node.Begin = t.Begin;
       node.Count = t.End - t.Begin;

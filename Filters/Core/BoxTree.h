@@ -66,8 +66,10 @@ public:
 
   /// Builds the hierarchy over `boxes` (item i has box i). `values`, if given,
   /// holds one number per item; every node keeps the largest of its items'
-  /// values (e.g. the largest radius, for signed lower bounds). Deterministic.
-  void Build(const std::vector<Box>& boxes, const std::vector<double>* values = nullptr);
+  /// values (e.g. the largest radius, for signed lower bounds). Leaves hold
+  /// at most `leafSize` items. Deterministic.
+  void Build(
+    const std::vector<Box>& boxes, const std::vector<double>* values = nullptr, int leafSize = 4);
 
   bool Empty() const { return this->Nodes.empty(); }
   const std::vector<Node>& GetNodes() const { return this->Nodes; }
@@ -129,7 +131,7 @@ public:
 
 private:
   void BuildNodes(const std::vector<Box>& boxes, const std::vector<Point3>& centres,
-    const std::vector<double>* values);
+    const std::vector<double>* values, std::uint32_t leafSize);
 
   std::vector<Node> Nodes;
   std::vector<std::uint32_t> Items;

@@ -12,6 +12,8 @@ namespace medialaxis
 namespace
 {
 constexpr double Infinity = std::numeric_limits<double>::infinity();
+// Primitives per tree leaf: evaluating one costs less than a node's bound.
+constexpr int EnvelopeLeafSize = 8;
 
 Box BallBox(const Point3& c, double r)
 {
@@ -98,15 +100,16 @@ MedialEnvelope::MedialEnvelope(const MedialMesh& mesh, bool accelerate)
     if (degree[v] == 0)
     {
       this->Active.push_back({ PrimitiveKind::Sphere, static_cast<Index>(v) });
-      this->ActiveBoxes.push_back(BallBox(mesh.Centers[v], mesh.Radii[v]));
+      this->ActiveBoxes.push_back(BallBox(mesh.Centers[v], 0.0));
       maxRadius.push_back(mesh.Radii[v]);
     }
   }
   for (std::size_t e = 0; e < this->Edges.size(); ++e)
   {
     const ConePrimitive& c = this->ConeList[e];
-    Box b = BallBox(c.C[0], c.R[0]);
-    b.Extend(BallBox(c.C[1], c.R[1]));
+    Box b;
+    b.Extend(c.C[0]);
+    b.Extend(c.C[1]);
     this->Active.push_back({ PrimitiveKind::Cone, static_cast<Index>(e) });
     this->ActiveBoxes.push_back(b);
     maxRadius.push_back(std::max(c.R[0], c.R[1]));
@@ -121,20 +124,163 @@ MedialEnvelope::MedialEnvelope(const MedialMesh& mesh, bool accelerate)
     Box b;
     for (int i = 0; i < 3; ++i)
     {
-      b.Extend(BallBox(s.C[i], s.R[i]));
+      b.Extend(s.C[i]);
     }
     this->Active.push_back({ PrimitiveKind::Slab, static_cast<Index>(f) });
     this->ActiveBoxes.push_back(b);
     maxRadius.push_back(std::max({ s.R[0], s.R[1], s.R[2] }));
   }
-  for (const Box& b : this->ActiveBoxes)
+  // Vertex -> incident active primitives.
+  std::vector<std::vector<std::uint32_t>> incident(nv);
+  for (std::uint32_t a = 0; a < this->Active.size(); ++a)
   {
-    this->UnionBounds.Extend(b);
+    const PrimitiveRef& ref = this->Active[a];
+    if (ref.Kind == PrimitiveKind::Sphere)
+    {
+      incident[ref.Id].push_back(a);
+    }
+    else if (ref.Kind == PrimitiveKind::Cone)
+    {
+      for (Index v : this->Edges[ref.Id])
+      {
+        incident[v].push_back(a);
+      }
+    }
+    else
+    {
+      for (Index v : this->Faces[ref.Id])
+      {
+        incident[v].push_back(a);
+      }
+    }
+  }
+  this->IncidentOffsets.assign(1, 0);
+  for (const auto& list : incident)
+  {
+    this->Incident.insert(this->Incident.end(), list.begin(), list.end());
+    this->IncidentOffsets.push_back(static_cast<std::uint32_t>(this->Incident.size()));
+  }
+
+  this->Records.resize(this->Active.size());
+  this->Slot.resize(this->Active.size());
+  for (std::uint32_t a = 0; a < this->Active.size(); ++a)
+  {
+    this->Slot[a] = a;
+  }
+  for (std::size_t a = 0; a < this->Active.size(); ++a)
+  {
+    Compact& k = this->Records[a];
+    double* d = k.D;
+    auto store = [](double* to, const Point3& x) { std::copy(x.begin(), x.end(), to); };
+    const PrimitiveRef& ref = this->Active[a];
+    if (ref.Kind == PrimitiveKind::Sphere)
+    {
+      k.Kind = 0;
+      store(d, this->SphereList[ref.Id].Center);
+      d[3] = this->SphereList[ref.Id].Radius;
+    }
+    else if (ref.Kind == PrimitiveKind::Cone)
+    {
+      const ConePrimitive& cone = this->ConeList[ref.Id];
+      const int big = cone.Nested ? cone.Big : 0;
+      k.Kind = cone.Nested ? 0 : 1;
+      store(d, cone.C[big]);
+      d[3] = cone.R[big];
+      store(d + 4, cone.Axis);
+      d[7] = cone.SinPhi;
+      d[8] = cone.CosPhi;
+      d[9] = cone.Length * cone.CosPhi;
+      store(d + 10, cone.C[1]);
+      d[13] = cone.R[1];
+    }
+    else
+    {
+      const SlabPrimitive& slab = this->SlabList[ref.Id];
+      k.Kind = 2;
+      store(d, slab.C[0]);
+      store(d + 3, slab.PlaneNormal);
+      store(d + 6, slab.Normals[0]);
+      store(d + 9, slab.Normals[1]);
+      d[12] = slab.Offsets[0];
+      d[13] = slab.Offsets[1];
+      d[14] = slab.Gamma;
+      store(d + 15, slab.E1);
+      store(d + 18, slab.E2);
+      d[21] = slab.InvG11;
+      d[22] = slab.InvG12;
+      d[23] = slab.InvG22;
+    }
+  }
+
+  // Each primitive has two boxes: of its balls (the primitive's own box) and
+  // of its centres; the hierarchy is built on the former and keeps the
+  // latter per node too (see SignedBound).
+  this->ActiveRadius = maxRadius;
+  this->ActiveBallBoxes.resize(this->ActiveBoxes.size());
+  for (std::size_t a = 0; a < this->ActiveBoxes.size(); ++a)
+  {
+    const Box& b = this->ActiveBoxes[a];
+    const double r = maxRadius[a];
+    this->ActiveBallBoxes[a].Extend(Point3{ b.Lo[0] - r, b.Lo[1] - r, b.Lo[2] - r });
+    this->ActiveBallBoxes[a].Extend(Point3{ b.Hi[0] + r, b.Hi[1] + r, b.Hi[2] + r });
+    this->UnionBounds.Extend(this->ActiveBallBoxes[a]);
   }
   this->Tol = 1e-10 * this->Diagonal();
   if (this->Accelerate)
   {
-    this->Tree.Build(this->ActiveBoxes, &maxRadius);
+    this->Tree.Build(this->ActiveBallBoxes, &maxRadius, EnvelopeLeafSize);
+    std::vector<Compact> ordered(this->Records.size());
+    for (std::size_t i = 0; i < ordered.size(); ++i)
+    {
+      const std::uint32_t a = this->Tree.GetItems()[i];
+      ordered[i] = this->Records[a];
+      this->Slot[a] = static_cast<std::uint32_t>(i);
+    }
+    this->Records.swap(ordered);
+    // Children come after their parent: fill the node hulls bottom-up.
+    std::vector<Dop> itemDops(this->Active.size());
+    for (std::uint32_t a = 0; a < this->Active.size(); ++a)
+    {
+      const PrimitiveRef& ref = this->Active[a];
+      if (ref.Kind == PrimitiveKind::Sphere)
+      {
+        itemDops[a].Extend(this->SphereList[ref.Id]);
+      }
+      else if (ref.Kind == PrimitiveKind::Cone)
+      {
+        for (Index v : this->Edges[ref.Id])
+        {
+          itemDops[a].Extend(this->SphereList[v]);
+        }
+      }
+      else
+      {
+        for (Index v : this->Faces[ref.Id])
+        {
+          itemDops[a].Extend(this->SphereList[v]);
+        }
+      }
+    }
+    const auto& nodes = this->Tree.GetNodes();
+    const auto& items = this->Tree.GetItems();
+    this->NodeDops.assign(nodes.size(), Dop());
+    for (std::size_t n = nodes.size(); n-- > 0;)
+    {
+      const BoxTree::Node& node = nodes[n];
+      Dop& dop = this->NodeDops[n];
+      if (node.Count > 0)
+      {
+        for (std::uint32_t i = node.Begin; i < node.Begin + node.Count; ++i)
+        {
+          dop.Extend(itemDops[items[i]]);
+        }
+      }
+      else
+      {
+        dop.Extend(this->NodeDops[node.Begin]);
+        dop.Extend(this->NodeDops[node.Begin + 1]);
+      }
+    }
   }
 }
 
@@ -157,37 +303,95 @@ PrimitiveDistance MedialEnvelope::PrimitiveSignedDistance(
   }
 }
 
-double MedialEnvelope::ActiveDistance(
-  std::uint32_t active, const Point3& p, PrimitiveDistance& out) const
+namespace
+{
+Point3 Load(const double* d)
+{
+  return { d[0], d[1], d[2] };
+}
+}
+
+// The hot loop: the signed distance of one active primitive from its compact
+// record, with the same arithmetic as SphereDistance, ConeDistance and
+// SlabInteriorDistance (so the values agree bit for bit) but no normal.
+double MedialEnvelope::ActiveValue(std::uint32_t active, const Point3& p) const
+{
+  const Compact& k = this->Records[this->Slot[active]];
+  const double* d = k.D;
+  switch (k.Kind)
+  {
+    case 0:
+      return Norm(p - Load(d)) - d[3];
+    case 1:
+    {
+      const Point3 c0 = Load(d), axis = Load(d + 4);
+      const Point3 v = p - c0;
+      const double a = Dot(v, axis);
+      const Point3 w = v - a * axis;
+      const double b = Norm(w);
+      const double s = a * d[8] - b * d[7];
+      if (s <= 0.0)
+      {
+        return Norm(p - c0) - d[3];
+      }
+      if (s >= d[9])
+      {
+        return Norm(p - Load(d + 10)) - d[13];
+      }
+      return a * d[7] + b * d[8] - d[3];
+    }
+    default:
+    {
+      const Point3 c0 = Load(d);
+      const double height = Dot(p - c0, Load(d + 3));
+      const int side = height >= 0.0 ? 0 : 1;
+      const Point3 n = Load(d + 6 + 3 * side);
+      const double t = std::abs(height) / d[14];
+      const Point3 v = (p - t * n) - c0;
+      const double d1 = Dot(v, Load(d + 15)), d2 = Dot(v, Load(d + 18));
+      const double b1 = d[21] * d1 + d[22] * d2;
+      const double b2 = d[22] * d1 + d[23] * d2;
+      if (b1 < 0.0 || b2 < 0.0 || b1 + b2 > 1.0)
+      {
+        return Infinity;
+      }
+      return Dot(n, p) - d[12 + side];
+    }
+  }
+}
+
+PrimitiveDistance MedialEnvelope::ActiveDistance(std::uint32_t active, const Point3& p) const
 {
   const PrimitiveRef& ref = this->Active[active];
   switch (ref.Kind)
   {
     case PrimitiveKind::Sphere:
-      out = SphereDistance(this->SphereList[ref.Id], p);
-      break;
+      return SphereDistance(this->SphereList[ref.Id], p);
     case PrimitiveKind::Cone:
-      out = ConeDistance(this->ConeList[ref.Id], p);
-      break;
+      return ConeDistance(this->ConeList[ref.Id], p);
     default:
-      out = SlabInteriorDistance(this->SlabList[ref.Id], p);
-      break;
+      return SlabInteriorDistance(this->SlabList[ref.Id], p);
   }
-  return out.Distance;
 }
 
 namespace
 {
-// Lower bound of the signed distance of any primitive below a node: the
-// distance to its box outside it, minus the largest radius inside it (no
-// primitive is deeper than its largest ball).
+// Lower bound, for every node, of the signed distance of the primitives below
+// it: the signed distance to the 26-sided hull of their balls.
 struct SignedBound
 {
-  const Point3& P;
+  const BoxTree::Node* First;
+  const MedialEnvelope::Dop* Dops;
+  double T[MedialEnvelope::Dop::K];
+  SignedBound(const Point3& p, const BoxTree::Node* first, const MedialEnvelope::Dop* dops)
+    : First(first)
+    , Dops(dops)
+  {
+    MedialEnvelope::Dop::Project(p, this->T);
+  }
   double operator()(const BoxTree::Node& n) const
   {
-    const double d2 = SquaredDistanceToBox(this->P, n.Bounds);
-    return d2 > 0.0 ? std::sqrt(d2) : -n.Value;
+    return this->Dops[&n - this->First].Bound(this->T);
   }
 };
 }
@@ -197,22 +401,21 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
   Nearest best;
   best.Distance = Infinity;
   std::uint32_t bestItem = std::numeric_limits<std::uint32_t>::max();
-  PrimitiveDistance d;
   auto visit = [&](std::uint32_t item)
   {
-    const double v = this->ActiveDistance(item, p, d);
+    const double v = this->ActiveValue(item, p);
     // Ties go to the lowest index, as in the brute-force loop.
     if (v < best.Distance || (v == best.Distance && item < bestItem))
     {
       best.Distance = v;
-      best.Normal = d.Normal;
       bestItem = item;
     }
     return false;
   };
   if (this->Accelerate)
   {
-    this->Tree.Search(SignedBound{ p }, visit, best.Distance);
+    this->Tree.Search(
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()), visit, best.Distance);
   }
   else
   {
@@ -224,6 +427,7 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
   if (bestItem != std::numeric_limits<std::uint32_t>::max())
   {
     best.Primitive = this->Active[bestItem];
+    best.Normal = this->ActiveDistance(bestItem, p).Normal;
   }
   return best;
 }
@@ -232,15 +436,15 @@ bool MedialEnvelope::StrictlyInside(const Point3& p, double tolerance) const
 {
   const double cutoff = -tolerance;
   bool found = false;
-  PrimitiveDistance d;
   auto visit = [&](std::uint32_t item)
   {
-    found = this->ActiveDistance(item, p, d) < cutoff;
+    found = this->ActiveValue(item, p) < cutoff;
     return found;
   };
   if (this->Accelerate)
   {
-    this->Tree.Search(SignedBound{ p }, visit, cutoff);
+    this->Tree.Search(
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()), visit, cutoff);
   }
   else
   {
@@ -251,15 +455,31 @@ bool MedialEnvelope::StrictlyInside(const Point3& p, double tolerance) const
   return found;
 }
 
+bool MedialEnvelope::StrictlyInside(
+  const Point3& p, double tolerance, const Index* vertices, int count) const
+{
+  for (int i = 0; i < count; ++i)
+  {
+    for (std::uint32_t k = this->IncidentOffsets[vertices[i]];
+         k < this->IncidentOffsets[vertices[i] + 1]; ++k)
+    {
+      if (this->ActiveValue(this->Incident[k], p) < -tolerance)
+      {
+        return true;
+      }
+    }
+  }
+  return this->StrictlyInside(p, tolerance);
+}
+
 void MedialEnvelope::Containing(
   const Point3& p, std::vector<std::pair<double, std::uint32_t>>& out) const
 {
   out.clear();
   const double cutoff = 0.0;
-  PrimitiveDistance d;
   auto visit = [&](std::uint32_t item)
   {
-    const double v = this->ActiveDistance(item, p, d);
+    const double v = this->ActiveValue(item, p);
     if (v < 0.0)
     {
       out.emplace_back(v, item);
@@ -268,7 +488,8 @@ void MedialEnvelope::Containing(
   };
   if (this->Accelerate)
   {
-    this->Tree.Search(SignedBound{ p }, visit, cutoff);
+    this->Tree.Search(
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()), visit, cutoff);
   }
   else
   {

@@ -38,6 +38,9 @@
 #include "MedialMesh.h"
 #include "MedialPrimitives.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace medialaxis
@@ -53,6 +56,69 @@ struct PrimitiveRef
 class MedialEnvelope
 {
 public:
+  /// A 26-sided bounding hull of balls (13 directions: axes, face and body
+  /// diagonals). Bound(p) is the largest signed distance of p to its planes, a
+  /// lower bound of the signed distance to any union of balls inside it.
+  struct Dop
+  {
+    static constexpr int K = 13;
+    double Lo[K], Hi[K];
+    Dop()
+    {
+      for (int k = 0; k < K; ++k)
+      {
+        this->Lo[k] = std::numeric_limits<double>::infinity();
+        this->Hi[k] = -std::numeric_limits<double>::infinity();
+      }
+    }
+    static const Point3& Axis(int k)
+    {
+      static const double a = 1.0 / std::sqrt(2.0), b = 1.0 / std::sqrt(3.0);
+      static const Point3 axes[K] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { a, a, 0 },
+        { a, -a, 0 }, { a, 0, a }, { a, 0, -a }, { 0, a, a }, { 0, a, -a }, { b, b, b },
+        { b, b, -b }, { b, -b, b }, { -b, b, b } };
+      return axes[k];
+    }
+    void Extend(const SpherePrimitive& s)
+    {
+      for (int k = 0; k < K; ++k)
+      {
+        const Point3& u = Axis(k);
+        const double t = u[0] * s.Center[0] + u[1] * s.Center[1] + u[2] * s.Center[2];
+        this->Lo[k] = std::min(this->Lo[k], t - s.Radius);
+        this->Hi[k] = std::max(this->Hi[k], t + s.Radius);
+      }
+    }
+    void Extend(const Dop& d)
+    {
+      for (int k = 0; k < K; ++k)
+      {
+        this->Lo[k] = std::min(this->Lo[k], d.Lo[k]);
+        this->Hi[k] = std::max(this->Hi[k], d.Hi[k]);
+      }
+    }
+    /// p projected on the K axes.
+    static void Project(const Point3& p, double t[K])
+    {
+      for (int k = 0; k < K; ++k)
+      {
+        const Point3& u = Axis(k);
+        t[k] = u[0] * p[0] + u[1] * p[1] + u[2] * p[2];
+      }
+    }
+    /// The bound for a point given by its projections.
+    double Bound(const double t[K]) const
+    {
+      double b = -std::numeric_limits<double>::infinity();
+      for (int k = 0; k < K; ++k)
+      {
+        const double above = t[k] - this->Hi[k], below = this->Lo[k] - t[k];
+        b = std::max(b, std::max(above, below));
+      }
+      return b;
+    }
+  };
+
   /// Builds every primitive of a valid medial mesh. With accelerate = false
   /// every query loops over all primitives (the brute-force reference).
   explicit MedialEnvelope(const MedialMesh& mesh, bool accelerate = true);
@@ -83,6 +149,10 @@ public:
 
   /// True when F(p) < -tolerance: p is strictly inside some primitive.
   bool StrictlyInside(const Point3& p, double tolerance) const;
+  /// The same, trying first the primitives incident to the given medial
+  /// vertices (for a point on a primitive's surface, its neighbours are the
+  /// likely ones to bury it).
+  bool StrictlyInside(const Point3& p, double tolerance, const Index* vertices, int count) const;
 
   struct BoundaryDistance
   {
@@ -106,7 +176,8 @@ private:
   // isolated vertices only (a ball with an edge lies inside that edge's
   // cone), every cone, and the interior part of slabs with tangent planes
   // (their edge cones are cones already).
-  double ActiveDistance(std::uint32_t active, const Point3& p, PrimitiveDistance& out) const;
+  double ActiveValue(std::uint32_t active, const Point3& p) const;
+  PrimitiveDistance ActiveDistance(std::uint32_t active, const Point3& p) const;
   void Containing(const Point3& p, std::vector<std::pair<double, std::uint32_t>>& out) const;
   double ProjectOntoBoundary(const Point3& p, std::uint32_t start) const;
   double TraceExit(const Point3& p, const Point3& direction, double limit) const;
@@ -117,7 +188,23 @@ private:
   std::vector<std::array<Index, 2>> Edges;
   std::vector<std::array<Index, 3>> Faces;
   std::vector<PrimitiveRef> Active;
-  std::vector<Box> ActiveBoxes;
+  // Compact copy of each active primitive for the distance loops: sphere
+  // (centre, radius), cone (C0, R0, axis, sin, cos, length x cos, C1, R1),
+  // slab interior (C0, plane normal, tangent normals and offsets, gamma,
+  // edges, inverse Gram matrix).
+  struct Compact
+  {
+    double D[24];
+    int Kind; // 0 sphere (or nested cone), 1 cone, 2 slab interior
+  };
+  std::vector<Compact> Records;    // in the tree's item order (locality)
+  std::vector<std::uint32_t> Slot; // active id -> index in Records
+  // Active primitives incident to each medial vertex (compressed rows).
+  std::vector<std::uint32_t> IncidentOffsets, Incident;
+  std::vector<Box> ActiveBoxes;     // boxes of the centres
+  std::vector<Box> ActiveBallBoxes; // boxes of the primitives
+  std::vector<Dop> NodeDops;        // per tree node: hull of the balls below it
+  std::vector<double> ActiveRadius; // largest radius
   BoxTree Tree;
   bool Accelerate;
   Box UnionBounds;

@@ -460,7 +460,7 @@ TEST(EnvelopeDistance, InsideTheUnionAtACrease)
   const MedialEnvelope envelope(m);
   Random rng(9);
   int crease = 0;
-  for (int i = 0; i < 4000 && crease < 30; ++i)
+  for (int i = 0; i < 4000 && crease < 15; ++i)
   {
     const Point3 p = RandomPoint(rng, -0.5, 0.5);
     const auto d = envelope.DistanceToBoundary(p);

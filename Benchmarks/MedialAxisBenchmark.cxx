@@ -2,20 +2,29 @@
 // Per-stage wall time and peak resident memory of the MedialAxis pipeline.
 //
 //   medialaxis-benchmark [--samples N] [--target V] [--cad] [--threads T] [--scaling]
-//                        [--shape torus|box|...] mesh...
+//                        [--envelope] [--error-samples S] [--shape torus|box|...] mesh...
 //
 // Memory: the process's resident peak during each stage, and in brackets
 // how far it rose above the resident size at the stage's start.
 // --scaling runs every mesh at 10K, 25K, 50K, 100K and 200K samples (target
 // a tenth of the samples) and
 // prints the fitted growth exponent of each stage's time.
+// --envelope adds, on the simplified MAT: "envelope" (the primitives-mode
+// envelope surface, core), "envelope-vtk" (the same through
+// vtkSlabReconstructor, poly data included) and "error" (reconstruction
+// error with S surface samples and S envelope samples, default 100,000).
 #include "AnalyticShapes.h"
 #include "BlueNoiseSampler.h"
 #include "AtlasSimplifier.h"
+#include "EnvelopeDistance.h"
+#include "EnvelopeMesher.h"
 #include "MedialMeshQuality.h"
 #include "Parallel.h"
+#include "ReconstructionError.h"
 #include "RestrictedVoronoi.h"
 #include "VoronoiMedialAxis.h"
+#include "vtkMedialMeshConversion.h"
+#include "vtkSlabReconstructor.h"
 #include "vtkSurfaceFileReader.h"
 #include "vtkSurfacePreparation.h"
 
@@ -112,6 +121,42 @@ bool LoadSurface(const std::string& spec, bool isShape, TriangleMesh& mesh, std:
 }
 
 std::size_t TopologyGuard = AtlasSimplifierOptions().TopologyGuardVertexCount;
+bool Envelope = false;
+std::size_t ErrorSamples = 100000;
+
+// Envelope (primitives mode) and reconstruction error of a simplified MAT.
+void RunEnvelope(const TriangleMesh& mesh, const MedialMesh& medial, std::vector<Stage>& stages)
+{
+  EnvelopeSurface surface;
+  stages.push_back(Measure("envelope", [&] {
+    const MedialEnvelope envelope(medial);
+    surface = MeshEnvelopePrimitives(envelope, EnvelopeMeshOptions());
+  }));
+  vtkNew<vtkPolyData> medialPd;
+  MedialMeshToPolyData(medial, medialPd);
+  vtkNew<vtkSlabReconstructor> reconstructor;
+  reconstructor->SetInputData(medialPd);
+  stages.push_back(Measure("envelope-vtk", [&] { reconstructor->Update(); }));
+  ReconstructionErrorResult error;
+  ReconstructionErrorOptions options;
+  options.NumberOfSamples = ErrorSamples;
+  options.NumberOfEnvelopeSamples = ErrorSamples;
+  stages.push_back(Measure("error", [&] {
+    const MedialEnvelope envelope(medial);
+    error = ComputeReconstructionError(mesh, envelope, options);
+  }));
+  std::printf("  envelope: %zu triangles; error (%zu + %zu vertices surface samples, %zu envelope "
+              "samples of %zu candidates): Hausdorff %.4f%% (surface->envelope %.4f%%, at least "
+              "%.4f%%; envelope->surface %.4f%%), mean %.4f%%, RMS %.4f%%; %zu of %zu inside "
+              "points uncertified, largest gap %.3g%%\n",
+    surface.Mesh.Triangles.size(), ErrorSamples, mesh.Points.size(), error.EnvelopeSamples.size(),
+    error.EnvelopeCandidates, 100 * error.Hausdorff / error.Diagonal,
+    100 * error.SurfaceToEnvelope.Hausdorff / error.Diagonal,
+    100 * error.SurfaceToEnvelope.HausdorffLowerBound / error.Diagonal,
+    100 * error.EnvelopeToSurface.Hausdorff / error.Diagonal, 100 * error.Mean / error.Diagonal,
+    100 * error.RMS / error.Diagonal, error.UncertifiedPoints, error.InsidePoints,
+    100 * error.LargestBoundGap / error.Diagonal);
+}
 
 std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples, std::size_t target, bool cad)
 {
@@ -162,6 +207,10 @@ std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples, st
     quality.DegenerateTriangles, quality.FoldedTriangles, quality.FoldedEdges,
     ValidateMedialMesh(m).IsValid() ? "valid" : ValidateMedialMesh(m).Message.c_str(),
     quality.MeanMinimumAngle, quality.PercentMinimumAngleBelow30, quality.MeanQuality);
+  if (Envelope)
+  {
+    RunEnvelope(mesh, m, stages);
+  }
   return stages;
 }
 
@@ -199,13 +248,17 @@ int main(int argc, char* argv[])
       threads = std::stoi(argv[++i]);
     else if (arg == "--scaling")
       scaling = true;
+    else if (arg == "--envelope")
+      Envelope = true;
+    else if (arg == "--error-samples" && i + 1 < argc)
+      ErrorSamples = std::stoul(argv[++i]);
     else if (arg == "--shape" && i + 1 < argc)
       inputs.emplace_back(argv[++i], true);
     else if (arg == "-h" || arg == "--help")
     {
       std::cout << "usage: " << argv[0]
-                << " [--samples N] [--target V] [--cad] [--threads T] [--scaling]"
-                   " [--shape torus|sphere|box] mesh...\n";
+                << " [--samples N] [--target V] [--cad] [--threads T] [--scaling] [--envelope]"
+                   " [--error-samples S] [--shape torus|sphere|box] mesh...\n";
       return 0;
     }
     else

@@ -66,6 +66,14 @@ void AddFieldValue(vtkPolyData* output, const char* name, long long value)
   output->GetFieldData()->AddArray(a);
 }
 
+void AddFieldDouble(vtkPolyData* output, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  output->GetFieldData()->AddArray(a);
+}
+
 void AddAtlasArrays(
   vtkPolyData* output, const std::vector<Index>& offsets, const std::vector<Index>& sites)
 {

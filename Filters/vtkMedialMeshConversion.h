@@ -40,6 +40,9 @@ std::string GetAtlasArrays(vtkPolyData* input, std::vector<Index>& offsets, std:
 /// Adds a one-value field-data array (a count or statistic for reports).
 void AddFieldValue(vtkPolyData* output, const char* name, long long value);
 
+/// Adds a one-value double field-data array (a measured quantity).
+void AddFieldDouble(vtkPolyData* output, const char* name, double value);
+
 /// The shared validity check for medial meshes given as poly data.
 inline std::string ValidateMedialPolyData(vtkPolyData* input)
 {

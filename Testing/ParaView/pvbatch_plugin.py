@@ -113,4 +113,36 @@ if os.path.exists(fandisk):
     check(corr.GetCellData().GetArray("MedialVertexId") is not None, "no correspondence output")
 else:
     print("skipped the one-click filter: %s not found" % fandisk)
+# The envelope of a medial mesh, overlapping primitives and closed boundary.
+envelope = MedialEnvelope(Input=reader, Mode="Primitives")
+envelope.UpdatePipeline()
+pieces = servermanager.Fetch(envelope)
+check(pieces.GetNumberOfPolys() > 0, "empty primitives envelope")
+kinds = pieces.GetCellData().GetArray("PrimitiveKind")
+check(kinds is not None and kinds.GetRange() == (0.0, 2.0), "PrimitiveKind missing or incomplete")
+envelope.Mode = "Boundary"
+envelope.BoundaryResolution = 48
+envelope.UpdatePipeline()
+boundary = servermanager.Fetch(envelope)
+from vtkmodules.vtkFiltersCore import vtkFeatureEdges  # noqa: E402
+edges = vtkFeatureEdges()
+edges.SetInputData(boundary)
+edges.BoundaryEdgesOn()
+edges.NonManifoldEdgesOn()
+edges.FeatureEdgesOff()
+edges.ManifoldEdgesOff()
+edges.Update()
+check(boundary.GetNumberOfPolys() > 0, "empty boundary envelope")
+check(edges.GetOutput().GetNumberOfCells() == 0, "boundary envelope is not closed")
+# The reconstruction error of the simplified medial mesh against its surface.
+error = MedialReconstructionError(Input=shape, MedialMesh=OutputPort(simplified, 0),
+                                  NumberOfSamples=20000, NumberOfEnvelopeSamples=20000)
+error.UpdatePipeline()
+measured = servermanager.Fetch(error, idx=0)
+check(measured.GetPointData().GetArray("Distance") is not None, "no Distance on the surface")
+hausdorff = measured.GetFieldData().GetArray("HausdorffPercent")
+check(hausdorff is not None and 0 < hausdorff.GetValue(0) < 20,
+      "implausible Hausdorff distance %s" % (hausdorff and hausdorff.GetValue(0)))
+envelope_samples = servermanager.Fetch(error, idx=1)
+check(envelope_samples.GetNumberOfPoints() == 20000, "expected 20000 envelope samples")
 print("pvbatch plugin test passed")

@@ -187,6 +187,80 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(validator.GetOutput().GetNumberOfPoints(), 0)
         self.assertTrue(errors.messages)
 
+    def test_envelope_and_reconstruction_error(self):
+        # A capsule's medial mesh: two spheres and the edge between them.
+        text = "2 1 0\nv 0 0 -1 0.5\nv 0 0 1 0.5\ne 0 1\n"
+        with open(self.path("capsule.ma"), "w") as f:
+            f.write(text)
+        mat = medialaxis.vtkMedialAxisReader()
+        mat.SetFileName(self.path("capsule.ma"))
+
+        envelope = medialaxis.vtkSlabReconstructor()
+        envelope.SetInputConnection(mat.GetOutputPort())
+        envelope.SetModeToBoundary()
+        envelope.SetBoundaryResolution(48)
+        edges = vtk.vtkFeatureEdges()  # a closed surface: no boundary edges
+        edges.SetInputConnection(envelope.GetOutputPort())
+        edges.BoundaryEdgesOn()
+        edges.NonManifoldEdgesOn()
+        edges.FeatureEdgesOff()
+        edges.ManifoldEdgesOff()
+        edges.Update()
+        self.assertGreater(envelope.GetOutput().GetNumberOfPolys(), 1000)
+        self.assertEqual(edges.GetOutput().GetNumberOfCells(), 0)
+        self.assertEqual(envelope.GetModeAsString(), "boundary")
+        envelope.SetModeToPrimitives()
+        envelope.Update()
+        kinds = envelope.GetOutput().GetCellData().GetArray("PrimitiveKind")
+        self.assertEqual(kinds.GetRange(), (0.0, 1.0))  # balls and one cone
+
+        # The capsule surface measured against a medial mesh whose radius is
+        # 10% too large: the error is the radius difference, 0.05.
+        shape = medialaxis.vtkAnalyticShapeSource()
+        shape.SetShapeToCapsule()
+        shape.SetRadius(0.5)
+        shape.SetLength(2.0)
+        shape.SetResolution(48)
+        radius = mat.GetOutput().GetPointData().GetArray("Radius")
+        wrong = vtk.vtkPolyData()
+        wrong.DeepCopy(mat.GetOutput())
+        wrong.GetPointData().GetArray("Radius").SetValue(0, 0.55)
+        wrong.GetPointData().GetArray("Radius").SetValue(1, 0.55)
+        self.assertEqual(radius.GetValue(0), 0.5)
+        error = medialaxis.vtkMedialReconstructionError()
+        error.SetInputConnection(0, shape.GetOutputPort())
+        error.SetInputData(1, wrong)
+        error.SetNumberOfSamples(20000)
+        error.SetNumberOfEnvelopeSamples(20000)
+        error.Update()
+        self.assertAlmostEqual(error.GetHausdorff(), 0.05, delta=0.001)
+        surface = error.GetOutput()
+        fields = surface.GetFieldData()
+        self.assertAlmostEqual(fields.GetArray("HausdorffSurfaceToEnvelope").GetValue(0), 0.05,
+                               delta=0.001)
+        self.assertAlmostEqual(fields.GetArray("Mean").GetValue(0), 0.05, delta=0.001)
+        diagonal = fields.GetArray("BoundingBoxDiagonal").GetValue(0)
+        self.assertAlmostEqual(fields.GetArray("HausdorffPercent").GetValue(0),
+                               100 * error.GetHausdorff() / diagonal)
+        distance = surface.GetPointData().GetArray("Distance")
+        self.assertEqual(distance.GetNumberOfTuples(), surface.GetNumberOfPoints())
+        self.assertAlmostEqual(distance.GetRange()[1], 0.05, delta=1e-9)
+        samples = error.GetOutputDataObject(1)
+        self.assertEqual(samples.GetNumberOfPoints(), 20000)
+        self.assertIsNotNone(samples.GetPointData().GetArray("Distance"))
+
+        # A medial mesh without radii is refused with a clear message.
+        bad = vtk.vtkPolyData()
+        bad.DeepCopy(mat.GetOutput())
+        bad.GetPointData().RemoveArray("Radius")
+        refused = medialaxis.vtkMedialReconstructionError()
+        errors = ErrorObserver().attach(refused)
+        refused.SetInputConnection(0, shape.GetOutputPort())
+        refused.SetInputData(1, bad)
+        refused.Update()
+        self.assertTrue(errors.messages)
+        self.assertEqual(refused.GetOutput().GetNumberOfPoints(), 0)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A bounding-box hierarchy over extended objects (medial primitives, surface
+// triangles) for nearest-object and any-hit queries.
+//
+// Hand-written rather than nanoflann (KdTree.h indexes points only, while
+// primitives have very different extents) or CGAL's AABB tree (its traits
+// cannot prune with the signed lower bound that medial primitives allow, and
+// every CGAL translation unit costs a minute of build time).
+#ifndef medialaxis_BoxTree_h
+#define medialaxis_BoxTree_h
+
+#include "MedialMesh.h" // Point3
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace medialaxis
+{
+struct Box
+{
+  Point3 Lo{ std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+    std::numeric_limits<double>::infinity() };
+  Point3 Hi{ -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+    -std::numeric_limits<double>::infinity() };
+
+  void Extend(const Point3& p)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Lo[k] = std::min(this->Lo[k], p[k]);
+      this->Hi[k] = std::max(this->Hi[k], p[k]);
+    }
+  }
+  void Extend(const Box& b)
+  {
+    this->Extend(b.Lo);
+    this->Extend(b.Hi);
+  }
+  bool IsEmpty() const { return !(this->Lo[0] <= this->Hi[0]); }
+};
+
+/// Squared distance from p to the box (0 inside).
+inline double SquaredDistanceToBox(const Point3& p, const Box& b)
+{
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double d = std::max({ b.Lo[k] - p[k], 0.0, p[k] - b.Hi[k] });
+    d2 += d * d;
+  }
+  return d2;
+}
+
+class BoxTree
+{
+public:
+  struct Node
+  {
+    Box Bounds;
+    double Value;        // largest item value below this node (see Build)
+    std::uint32_t Begin; // leaf: first entry in Items(); inner: index of the first child
+    std::uint32_t Count; // leaf: number of items; inner: 0 (children are Begin, Begin + 1)
+  };
+
+  /// Builds the hierarchy over `boxes` (item i has box i). `values`, if given,
+  /// holds one number per item; every node keeps the largest of its items'
+  /// values (e.g. the largest radius, for signed lower bounds). Leaves hold
+  /// at most `leafSize` items. Deterministic.
+  void Build(
+    const std::vector<Box>& boxes, const std::vector<double>* values = nullptr, int leafSize = 4);
+
+  bool Empty() const { return this->Nodes.empty(); }
+  const std::vector<Node>& GetNodes() const { return this->Nodes; }
+  const std::vector<std::uint32_t>& GetItems() const { return this->Items; }
+
+  /// Depth-first search, nearer child first. `bound(node)` is a lower bound
+  /// of what any item below the node can give; nodes whose bound is not
+  /// below `cutoff` are skipped (cutoff may shrink while searching: pass a
+  /// reference to the caller's best value). `visit(item)` returns true to
+  /// stop the whole search (any-hit queries).
+  template <typename BoundFunction, typename VisitFunction>
+  void Search(BoundFunction&& bound, VisitFunction&& visit, const double& cutoff) const
+  {
+    if (this->Nodes.empty())
+    {
+      return;
+    }
+    struct Entry
+    {
+      std::uint32_t Node;
+      double Bound;
+    };
+    Entry stack[128];
+    int top = 0;
+    stack[top++] = { 0, bound(this->Nodes[0]) };
+    while (top > 0)
+    {
+      const Entry e = stack[--top];
+      if (!(e.Bound < cutoff))
+      {
+        continue;
+      }
+      const Node& n = this->Nodes[e.Node];
+      if (n.Count > 0)
+      {
+        for (std::uint32_t i = n.Begin; i < n.Begin + n.Count; ++i)
+        {
+          if (visit(this->Items[i]))
+          {
+            return;
+          }
+        }
+        continue;
+      }
+      const double b0 = bound(this->Nodes[n.Begin]), b1 = bound(this->Nodes[n.Begin + 1]);
+      // Push the farther child first so that the nearer one is searched first.
+      if (b0 <= b1)
+      {
+        stack[top++] = { n.Begin + 1, b1 };
+        stack[top++] = { n.Begin, b0 };
+      }
+      else
+      {
+        stack[top++] = { n.Begin, b0 };
+        stack[top++] = { n.Begin + 1, b1 };
+      }
+    }
+  }
+
+private:
+  void BuildNodes(const std::vector<Box>& boxes, const std::vector<Point3>& centres,
+    const std::vector<double>* values, std::uint32_t leafSize);
+
+  std::vector<Node> Nodes;
+  std::vector<std::uint32_t> Items;
+};
+}
+
+#endif

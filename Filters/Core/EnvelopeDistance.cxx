@@ -1,0 +1,645 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "EnvelopeDistance.h"
+
+#include "Vec3.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace medialaxis
+{
+namespace
+{
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+// Primitives per tree leaf: evaluating one costs less than a node's bound.
+constexpr int EnvelopeLeafSize = 8;
+
+Box BallBox(const Point3& c, double r)
+{
+  Box b;
+  b.Extend(Point3{ c[0] - r, c[1] - r, c[2] - r });
+  b.Extend(Point3{ c[0] + r, c[1] + r, c[2] + r });
+  return b;
+}
+
+// Solves the n x n (n <= 3) system g x = b by Gaussian elimination with
+// partial pivoting; false when (nearly) singular.
+bool SolveSmall(int n, double g[3][3], double b[3], double x[3])
+{
+  for (int c = 0; c < n; ++c)
+  {
+    int pivot = c;
+    for (int r = c + 1; r < n; ++r)
+    {
+      if (std::abs(g[r][c]) > std::abs(g[pivot][c]))
+      {
+        pivot = r;
+      }
+    }
+    if (!(std::abs(g[pivot][c]) > 1e-10))
+    {
+      return false;
+    }
+    std::swap(g[c], g[pivot]);
+    std::swap(b[c], b[pivot]);
+    for (int r = c + 1; r < n; ++r)
+    {
+      const double f = g[r][c] / g[c][c];
+      for (int k = c; k < n; ++k)
+      {
+        g[r][k] -= f * g[c][k];
+      }
+      b[r] -= f * b[c];
+    }
+  }
+  for (int r = n - 1; r >= 0; --r)
+  {
+    double s = b[r];
+    for (int k = r + 1; k < n; ++k)
+    {
+      s -= g[r][k] * x[k];
+    }
+    x[r] = s / g[r][r];
+  }
+  return true;
+}
+}
+
+MedialEnvelope::MedialEnvelope(const MedialMesh& mesh, bool accelerate)
+  : Accelerate(accelerate)
+{
+  const std::size_t nv = mesh.NumberOfVertices();
+  this->SphereList.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    this->SphereList[v] = { mesh.Centers[v], mesh.Radii[v] };
+  }
+  this->Edges = AllEdges(mesh);
+  this->Faces = mesh.Faces;
+  std::vector<int> degree(nv, 0);
+  this->ConeList.reserve(this->Edges.size());
+  for (const auto& e : this->Edges)
+  {
+    ++degree[e[0]];
+    ++degree[e[1]];
+    this->ConeList.push_back(
+      MakeCone(mesh.Centers[e[0]], mesh.Radii[e[0]], mesh.Centers[e[1]], mesh.Radii[e[1]]));
+  }
+  this->SlabList.reserve(this->Faces.size());
+  for (const auto& f : this->Faces)
+  {
+    this->SlabList.push_back(
+      MakeSlab({ mesh.Centers[f[0]], mesh.Centers[f[1]], mesh.Centers[f[2]] },
+        { mesh.Radii[f[0]], mesh.Radii[f[1]], mesh.Radii[f[2]] }));
+  }
+
+  std::vector<double> maxRadius;
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    if (degree[v] == 0)
+    {
+      this->Active.push_back({ PrimitiveKind::Sphere, static_cast<Index>(v) });
+      this->ActiveBoxes.push_back(BallBox(mesh.Centers[v], 0.0));
+      maxRadius.push_back(mesh.Radii[v]);
+    }
+  }
+  for (std::size_t e = 0; e < this->Edges.size(); ++e)
+  {
+    const ConePrimitive& c = this->ConeList[e];
+    Box b;
+    b.Extend(c.C[0]);
+    b.Extend(c.C[1]);
+    this->Active.push_back({ PrimitiveKind::Cone, static_cast<Index>(e) });
+    this->ActiveBoxes.push_back(b);
+    maxRadius.push_back(std::max(c.R[0], c.R[1]));
+  }
+  for (std::size_t f = 0; f < this->SlabList.size(); ++f)
+  {
+    const SlabPrimitive& s = this->SlabList[f];
+    if (!s.HasTangentPlanes)
+    {
+      continue;
+    }
+    Box b;
+    for (int i = 0; i < 3; ++i)
+    {
+      b.Extend(s.C[i]);
+    }
+    this->Active.push_back({ PrimitiveKind::Slab, static_cast<Index>(f) });
+    this->ActiveBoxes.push_back(b);
+    maxRadius.push_back(std::max({ s.R[0], s.R[1], s.R[2] }));
+  }
+  // Vertex -> incident active primitives.
+  std::vector<std::vector<std::uint32_t>> incident(nv);
+  for (std::uint32_t a = 0; a < this->Active.size(); ++a)
+  {
+    const PrimitiveRef& ref = this->Active[a];
+    if (ref.Kind == PrimitiveKind::Sphere)
+    {
+      incident[ref.Id].push_back(a);
+    }
+    else if (ref.Kind == PrimitiveKind::Cone)
+    {
+      for (Index v : this->Edges[ref.Id])
+      {
+        incident[v].push_back(a);
+      }
+    }
+    else
+    {
+      for (Index v : this->Faces[ref.Id])
+      {
+        incident[v].push_back(a);
+      }
+    }
+  }
+  this->IncidentOffsets.assign(1, 0);
+  for (const auto& list : incident)
+  {
+    this->Incident.insert(this->Incident.end(), list.begin(), list.end());
+    this->IncidentOffsets.push_back(static_cast<std::uint32_t>(this->Incident.size()));
+  }
+
+  this->Records.resize(this->Active.size());
+  this->Slot.resize(this->Active.size());
+  for (std::uint32_t a = 0; a < this->Active.size(); ++a)
+  {
+    this->Slot[a] = a;
+  }
+  for (std::size_t a = 0; a < this->Active.size(); ++a)
+  {
+    Compact& k = this->Records[a];
+    double* d = k.D;
+    auto store = [](double* to, const Point3& x) { std::copy(x.begin(), x.end(), to); };
+    const PrimitiveRef& ref = this->Active[a];
+    if (ref.Kind == PrimitiveKind::Sphere)
+    {
+      k.Kind = 0;
+      store(d, this->SphereList[ref.Id].Center);
+      d[3] = this->SphereList[ref.Id].Radius;
+    }
+    else if (ref.Kind == PrimitiveKind::Cone)
+    {
+      const ConePrimitive& cone = this->ConeList[ref.Id];
+      const int big = cone.Nested ? cone.Big : 0;
+      k.Kind = cone.Nested ? 0 : 1;
+      store(d, cone.C[big]);
+      d[3] = cone.R[big];
+      store(d + 4, cone.Axis);
+      d[7] = cone.SinPhi;
+      d[8] = cone.CosPhi;
+      d[9] = cone.Length * cone.CosPhi;
+      store(d + 10, cone.C[1]);
+      d[13] = cone.R[1];
+    }
+    else
+    {
+      const SlabPrimitive& slab = this->SlabList[ref.Id];
+      k.Kind = 2;
+      store(d, slab.C[0]);
+      store(d + 3, slab.PlaneNormal);
+      store(d + 6, slab.Normals[0]);
+      store(d + 9, slab.Normals[1]);
+      d[12] = slab.Offsets[0];
+      d[13] = slab.Offsets[1];
+      d[14] = slab.Gamma;
+      store(d + 15, slab.E1);
+      store(d + 18, slab.E2);
+      d[21] = slab.InvG11;
+      d[22] = slab.InvG12;
+      d[23] = slab.InvG22;
+    }
+  }
+
+  // Each primitive has two boxes: of its balls (the primitive's own box) and
+  // of its centres; the hierarchy is built on the former and keeps the
+  // latter per node too (see SignedBound).
+  this->ActiveRadius = maxRadius;
+  this->ActiveBallBoxes.resize(this->ActiveBoxes.size());
+  for (std::size_t a = 0; a < this->ActiveBoxes.size(); ++a)
+  {
+    const Box& b = this->ActiveBoxes[a];
+    const double r = maxRadius[a];
+    this->ActiveBallBoxes[a].Extend(Point3{ b.Lo[0] - r, b.Lo[1] - r, b.Lo[2] - r });
+    this->ActiveBallBoxes[a].Extend(Point3{ b.Hi[0] + r, b.Hi[1] + r, b.Hi[2] + r });
+    this->UnionBounds.Extend(this->ActiveBallBoxes[a]);
+  }
+  this->Tol = 1e-10 * this->Diagonal();
+  if (this->Accelerate)
+  {
+    this->Tree.Build(this->ActiveBallBoxes, &maxRadius, EnvelopeLeafSize);
+    std::vector<Compact> ordered(this->Records.size());
+    for (std::size_t i = 0; i < ordered.size(); ++i)
+    {
+      const std::uint32_t a = this->Tree.GetItems()[i];
+      ordered[i] = this->Records[a];
+      this->Slot[a] = static_cast<std::uint32_t>(i);
+    }
+    this->Records.swap(ordered);
+    // Children come after their parent: fill the node hulls bottom-up.
+    std::vector<Dop> itemDops(this->Active.size());
+    for (std::uint32_t a = 0; a < this->Active.size(); ++a)
+    {
+      const PrimitiveRef& ref = this->Active[a];
+      if (ref.Kind == PrimitiveKind::Sphere)
+      {
+        itemDops[a].Extend(this->SphereList[ref.Id]);
+      }
+      else if (ref.Kind == PrimitiveKind::Cone)
+      {
+        for (Index v : this->Edges[ref.Id])
+        {
+          itemDops[a].Extend(this->SphereList[v]);
+        }
+      }
+      else
+      {
+        for (Index v : this->Faces[ref.Id])
+        {
+          itemDops[a].Extend(this->SphereList[v]);
+        }
+      }
+    }
+    const auto& nodes = this->Tree.GetNodes();
+    const auto& items = this->Tree.GetItems();
+    this->NodeDops.assign(nodes.size(), Dop());
+    for (std::size_t n = nodes.size(); n-- > 0;)
+    {
+      const BoxTree::Node& node = nodes[n];
+      Dop& dop = this->NodeDops[n];
+      if (node.Count > 0)
+      {
+        for (std::uint32_t i = node.Begin; i < node.Begin + node.Count; ++i)
+        {
+          dop.Extend(itemDops[items[i]]);
+        }
+      }
+      else
+      {
+        dop.Extend(this->NodeDops[node.Begin]);
+        dop.Extend(this->NodeDops[node.Begin + 1]);
+      }
+    }
+  }
+}
+
+double MedialEnvelope::Diagonal() const
+{
+  return this->UnionBounds.IsEmpty() ? 0.0 : Norm(this->UnionBounds.Hi - this->UnionBounds.Lo);
+}
+
+PrimitiveDistance MedialEnvelope::PrimitiveSignedDistance(
+  const PrimitiveRef& ref, const Point3& p) const
+{
+  switch (ref.Kind)
+  {
+    case PrimitiveKind::Sphere:
+      return SphereDistance(this->SphereList[ref.Id], p);
+    case PrimitiveKind::Cone:
+      return ConeDistance(this->ConeList[ref.Id], p);
+    default:
+      return SlabDistance(this->SlabList[ref.Id], p);
+  }
+}
+
+namespace
+{
+Point3 Load(const double* d)
+{
+  return { d[0], d[1], d[2] };
+}
+}
+
+// The hot loop: the signed distance of one active primitive from its compact
+// record, with the same arithmetic as SphereDistance, ConeDistance and
+// SlabInteriorDistance (so the values agree bit for bit) but no normal.
+double MedialEnvelope::ActiveValue(std::uint32_t active, const Point3& p) const
+{
+  const Compact& k = this->Records[this->Slot[active]];
+  const double* d = k.D;
+  switch (k.Kind)
+  {
+    case 0:
+      return Norm(p - Load(d)) - d[3];
+    case 1:
+    {
+      const Point3 c0 = Load(d), axis = Load(d + 4);
+      const Point3 v = p - c0;
+      const double a = Dot(v, axis);
+      const Point3 w = v - a * axis;
+      const double b = Norm(w);
+      const double s = a * d[8] - b * d[7];
+      if (s <= 0.0)
+      {
+        return Norm(p - c0) - d[3];
+      }
+      if (s >= d[9])
+      {
+        return Norm(p - Load(d + 10)) - d[13];
+      }
+      return a * d[7] + b * d[8] - d[3];
+    }
+    default:
+    {
+      const Point3 c0 = Load(d);
+      const double height = Dot(p - c0, Load(d + 3));
+      const int side = height >= 0.0 ? 0 : 1;
+      const Point3 n = Load(d + 6 + 3 * side);
+      const double t = std::abs(height) / d[14];
+      const Point3 v = (p - t * n) - c0;
+      const double d1 = Dot(v, Load(d + 15)), d2 = Dot(v, Load(d + 18));
+      const double b1 = d[21] * d1 + d[22] * d2;
+      const double b2 = d[22] * d1 + d[23] * d2;
+      if (b1 < 0.0 || b2 < 0.0 || b1 + b2 > 1.0)
+      {
+        return Infinity;
+      }
+      return Dot(n, p) - d[12 + side];
+    }
+  }
+}
+
+PrimitiveDistance MedialEnvelope::ActiveDistance(std::uint32_t active, const Point3& p) const
+{
+  const PrimitiveRef& ref = this->Active[active];
+  switch (ref.Kind)
+  {
+    case PrimitiveKind::Sphere:
+      return SphereDistance(this->SphereList[ref.Id], p);
+    case PrimitiveKind::Cone:
+      return ConeDistance(this->ConeList[ref.Id], p);
+    default:
+      return SlabInteriorDistance(this->SlabList[ref.Id], p);
+  }
+}
+
+namespace
+{
+// Lower bound, for every node, of the signed distance of the primitives below
+// it: the signed distance to the 26-sided hull of their balls.
+struct SignedBound
+{
+  const BoxTree::Node* First;
+  const MedialEnvelope::Dop* Dops;
+  double T[MedialEnvelope::Dop::K];
+  SignedBound(const Point3& p, const BoxTree::Node* first, const MedialEnvelope::Dop* dops)
+    : First(first)
+    , Dops(dops)
+  {
+    MedialEnvelope::Dop::Project(p, this->T);
+  }
+  double operator()(const BoxTree::Node& n) const
+  {
+    return this->Dops[&n - this->First].Bound(this->T);
+  }
+};
+}
+
+MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
+{
+  Nearest best;
+  best.Distance = Infinity;
+  std::uint32_t bestItem = std::numeric_limits<std::uint32_t>::max();
+  auto visit = [&](std::uint32_t item)
+  {
+    const double v = this->ActiveValue(item, p);
+    // Ties go to the lowest index, as in the brute-force loop.
+    if (v < best.Distance || (v == best.Distance && item < bestItem))
+    {
+      best.Distance = v;
+      bestItem = item;
+    }
+    return false;
+  };
+  if (this->Accelerate)
+  {
+    this->Tree.Search(
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()), visit, best.Distance);
+  }
+  else
+  {
+    for (std::uint32_t i = 0; i < this->Active.size(); ++i)
+    {
+      visit(i);
+    }
+  }
+  if (bestItem != std::numeric_limits<std::uint32_t>::max())
+  {
+    best.Primitive = this->Active[bestItem];
+    best.Normal = this->ActiveDistance(bestItem, p).Normal;
+  }
+  return best;
+}
+
+bool MedialEnvelope::StrictlyInside(const Point3& p, double tolerance) const
+{
+  const double cutoff = -tolerance;
+  bool found = false;
+  auto visit = [&](std::uint32_t item)
+  {
+    found = this->ActiveValue(item, p) < cutoff;
+    return found;
+  };
+  if (this->Accelerate)
+  {
+    this->Tree.Search(
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()), visit, cutoff);
+  }
+  else
+  {
+    for (std::uint32_t i = 0; i < this->Active.size() && !visit(i); ++i)
+    {
+    }
+  }
+  return found;
+}
+
+bool MedialEnvelope::StrictlyInside(
+  const Point3& p, double tolerance, const Index* vertices, int count) const
+{
+  for (int i = 0; i < count; ++i)
+  {
+    for (std::uint32_t k = this->IncidentOffsets[vertices[i]];
+         k < this->IncidentOffsets[vertices[i] + 1]; ++k)
+    {
+      if (this->ActiveValue(this->Incident[k], p) < -tolerance)
+      {
+        return true;
+      }
+    }
+  }
+  return this->StrictlyInside(p, tolerance);
+}
+
+void MedialEnvelope::Containing(
+  const Point3& p, std::vector<std::pair<double, std::uint32_t>>& out) const
+{
+  out.clear();
+  const double cutoff = 0.0;
+  auto visit = [&](std::uint32_t item)
+  {
+    const double v = this->ActiveValue(item, p);
+    if (v < 0.0)
+    {
+      out.emplace_back(v, item);
+    }
+    return false;
+  };
+  if (this->Accelerate)
+  {
+    this->Tree.Search(
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()), visit, cutoff);
+  }
+  else
+  {
+    for (std::uint32_t i = 0; i < this->Active.size(); ++i)
+    {
+      visit(i);
+    }
+  }
+  std::sort(out.begin(), out.end());
+}
+
+// Closest point to p on the intersection of the boundaries of an active set
+// of up to three primitives, starting with {start}: Gauss-Newton steps on
+// the linearised constraints f_a(x) + n_a . (y - x) = 0 with y = p + sum c_a
+// n_a (the Lagrange form of the closest point; linear convergence, at a rate
+// set by the curvature of the primitives relative to the distance). When the
+// converged point is strictly inside another primitive, that primitive joins
+// the set. Returns the distance from p to the nearest point reached that lies
+// outside the open union (infinity if none): an upper bound of the distance
+// from p to the union's boundary whether or not the iteration converged.
+double MedialEnvelope::ProjectOntoBoundary(const Point3& p, std::uint32_t start) const
+{
+  PrimitiveRef active[3] = { this->Active[start] };
+  int count = 1;
+  const PrimitiveDistance d0 = this->PrimitiveSignedDistance(active[0], p);
+  Point3 x = p - d0.Distance * d0.Normal;
+  const double stepTolerance = 1e-9 * this->Diagonal();
+  double best = Infinity;
+  for (int iteration = 0; iteration < 200; ++iteration)
+  {
+    PrimitiveDistance pd[3];
+    for (int a = 0; a < count; ++a)
+    {
+      pd[a] = this->PrimitiveSignedDistance(active[a], x);
+    }
+    double g[3][3], b[3], c[3];
+    for (int a = 0; a < count; ++a)
+    {
+      for (int k = 0; k < count; ++k)
+      {
+        g[a][k] = Dot(pd[a].Normal, pd[k].Normal);
+      }
+      b[a] = Dot(pd[a].Normal, x - p) - pd[a].Distance;
+    }
+    if (!SolveSmall(count, g, b, c))
+    {
+      break;
+    }
+    Point3 y = p;
+    for (int a = 0; a < count; ++a)
+    {
+      y = y + c[a] * pd[a].Normal;
+    }
+    const double step = Norm(y - x);
+    x = y;
+    if (step > stepTolerance && iteration + 1 < 200)
+    {
+      continue;
+    }
+    const Nearest n = this->SignedDistance(x);
+    if (n.Distance >= -this->Tol)
+    {
+      best = std::min(best, Norm(x - p));
+      break;
+    }
+    bool known = count == 3;
+    for (int a = 0; a < count; ++a)
+    {
+      known = known || (active[a].Kind == n.Primitive.Kind && active[a].Id == n.Primitive.Id);
+    }
+    if (known)
+    {
+      break;
+    }
+    active[count++] = n.Primitive;
+  }
+  return best;
+}
+
+// Sphere tracing from p (inside U) along a unit direction: each step of -F
+// stays inside U, and the trace stops where F >= -tolerance. Returns the
+// distance travelled, or infinity beyond `limit` or without convergence.
+double MedialEnvelope::TraceExit(const Point3& p, const Point3& direction, double limit) const
+{
+  double t = 0.0;
+  for (int iteration = 0; iteration < 400; ++iteration)
+  {
+    const double f = this->SignedDistance(p + t * direction).Distance;
+    if (f >= -this->Tol)
+    {
+      return t;
+    }
+    t -= f;
+    if (t >= limit)
+    {
+      return Infinity;
+    }
+  }
+  return Infinity;
+}
+
+MedialEnvelope::BoundaryDistance MedialEnvelope::DistanceToBoundary(
+  const Point3& p, const Point3* hint) const
+{
+  const Nearest nearest = this->SignedDistance(p);
+  if (nearest.Distance >= 0.0)
+  {
+    return { nearest.Distance, nearest.Distance, nearest.Distance, false, true };
+  }
+  const double lower = -nearest.Distance;
+  // 1. The deepest primitive's own closest boundary point, when exposed.
+  const Point3 x = p + lower * nearest.Normal;
+  if (!this->StrictlyInside(x, this->Tol))
+  {
+    return { -lower, lower, lower, true, true };
+  }
+  // 2. A crease or corner: candidate boundary points, each checked exposed.
+  double upper = Infinity;
+  std::vector<std::pair<double, std::uint32_t>> containing;
+  this->Containing(p, containing);
+  const std::size_t starts = std::min<std::size_t>(containing.size(), 4);
+  for (std::size_t i = 0; i < starts; ++i)
+  {
+    upper = std::min(upper, this->ProjectOntoBoundary(p, containing[i].second));
+  }
+  Point3 directions[2] = { nearest.Normal, nearest.Normal };
+  int nd = 1;
+  if (hint)
+  {
+    const Point3 h = Normalized(*hint);
+    if (Dot(h, h) > 0.0)
+    {
+      directions[nd++] = h;
+    }
+  }
+  for (int i = 0; i < nd; ++i)
+  {
+    upper = std::min(upper, this->TraceExit(p, directions[i], upper));
+  }
+  if (!(upper < Infinity))
+  {
+    // Leaving the union's bounding box always exits U.
+    double exit = Infinity;
+    for (int k = 0; k < 3; ++k)
+    {
+      exit = std::min({ exit, p[k] - this->UnionBounds.Lo[k], this->UnionBounds.Hi[k] - p[k] });
+    }
+    upper = std::max(exit, 0.0);
+  }
+  upper = std::max(upper, lower);
+  return { -upper, lower, upper, true, upper - lower <= 2.0 * this->Tol };
+}
+}

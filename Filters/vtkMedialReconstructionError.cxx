@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vtkMedialReconstructionError.h"
+
+#include "EnvelopeDistance.h"
+#include "Parallel.h"
+#include "ReconstructionError.h"
+#include "vtkMedialMeshConversion.h"
+#include "vtkSurfacePreparation.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <string>
+
+vtkStandardNewMacro(vtkMedialReconstructionError);
+
+namespace
+{
+using namespace medialaxis;
+
+vtkSmartPointer<vtkDoubleArray> PointArray(const char* name, const std::vector<double>& values)
+{
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  std::copy(values.begin(), values.end(), a->GetPointer(0));
+  return a;
+}
+
+void AddStatistics(vtkPolyData* output, const ReconstructionErrorResult& r)
+{
+  const double diagonal = r.Diagonal;
+  auto add = [&](const std::string& name, double value)
+  {
+    AddFieldDouble(output, name.c_str(), value);
+    AddFieldDouble(
+      output, (name + "Percent").c_str(), diagonal > 0.0 ? 100.0 * value / diagonal : 0.0);
+  };
+  add("HausdorffSurfaceToEnvelope", r.SurfaceToEnvelope.Hausdorff);
+  add("HausdorffSurfaceToEnvelopeLowerBound", r.SurfaceToEnvelope.HausdorffLowerBound);
+  add("HausdorffEnvelopeToSurface", r.EnvelopeToSurface.Hausdorff);
+  add("Hausdorff", r.Hausdorff);
+  add("MeanSurfaceToEnvelope", r.SurfaceToEnvelope.Mean);
+  add("MeanEnvelopeToSurface", r.EnvelopeToSurface.Mean);
+  add("Mean", r.Mean);
+  add("RMSSurfaceToEnvelope", r.SurfaceToEnvelope.RMS);
+  add("RMSEnvelopeToSurface", r.EnvelopeToSurface.RMS);
+  add("RMS", r.RMS);
+  add("LargestInsideBoundGap", r.LargestBoundGap);
+  AddFieldDouble(output, "BoundingBoxDiagonal", diagonal);
+  AddFieldValue(output, "SurfaceSamples", static_cast<long long>(r.SurfaceToEnvelope.Samples));
+  AddFieldValue(output, "EnvelopeSamples", static_cast<long long>(r.EnvelopeToSurface.Samples));
+  AddFieldValue(output, "EnvelopeCandidates", static_cast<long long>(r.EnvelopeCandidates));
+  AddFieldValue(output, "InsidePoints", static_cast<long long>(r.InsidePoints));
+  AddFieldValue(output, "UncertifiedInsidePoints", static_cast<long long>(r.UncertifiedPoints));
+}
+}
+
+vtkMedialReconstructionError::vtkMedialReconstructionError()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+}
+
+int vtkMedialReconstructionError::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkMedialReconstructionError::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* medialInput = vtkPolyData::GetData(inputVector[1]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* samplesOutput = vtkPolyData::GetData(outputVector, 1);
+  output->Initialize();
+  samplesOutput->Initialize();
+  this->Hausdorff = this->HausdorffPercent = 0.0;
+  this->HausdorffSurfaceToEnvelope = this->HausdorffEnvelopeToSurface = 0.0;
+
+  vtkNew<vtkPolyData> prepared;
+  const auto report = PrepareSurfacePolyData(input, prepared);
+  if (!report.Ok())
+  {
+    vtkErrorMacro(<< "cannot measure the reconstruction error: " << report.Error);
+    return 0;
+  }
+  MedialMesh medial;
+  const std::string error = PolyDataToMedialMesh(medialInput, medial);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "cannot measure the reconstruction error: input port 1: " << error);
+    return 0;
+  }
+  if (medial.NumberOfVertices() == 0)
+  {
+    vtkErrorMacro(<< "cannot measure the reconstruction error: the medial mesh on input port 1 "
+                     "has no points (connect a medial mesh with point data 'Radius')");
+    return 0;
+  }
+  TriangleMesh surface;
+  surface.Points.resize(static_cast<std::size_t>(prepared->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < prepared->GetNumberOfPoints(); ++i)
+  {
+    prepared->GetPoint(i, surface.Points[i].data());
+  }
+  vtkIdType npts = 0;
+  const vtkIdType* ids = nullptr;
+  vtkCellArray* polys = prepared->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+  {
+    surface.Triangles.push_back({ ids[0], ids[1], ids[2] });
+  }
+  this->UpdateProgress(0.05);
+
+  ReconstructionErrorOptions options;
+  options.NumberOfSamples = static_cast<std::size_t>(this->NumberOfSamples);
+  options.NumberOfEnvelopeSamples = static_cast<std::size_t>(this->NumberOfEnvelopeSamples);
+  options.RandomSeed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->RandomSeed));
+  options.Progress = [this](double f)
+  {
+    this->UpdateProgress(0.05 + 0.9 * f);
+    return !this->GetAbortExecute();
+  };
+  const ReconstructionErrorResult result = RunWithThreads(this->NumberOfThreads,
+    [&]
+    {
+      const MedialEnvelope envelope(medial);
+      if (envelope.Empty())
+      {
+        return ReconstructionErrorResult();
+      }
+      return ComputeReconstructionError(surface, envelope, options);
+    });
+  if (result.Aborted)
+  {
+    return 1;
+  }
+  if (result.Diagonal == 0.0 && result.VertexDistance.empty())
+  {
+    vtkErrorMacro(<< "cannot measure the reconstruction error: the medial mesh has no primitive");
+    return 0;
+  }
+
+  output->ShallowCopy(prepared);
+  output->GetPointData()->AddArray(PointArray("Distance", result.VertexDistance));
+  output->GetPointData()->AddArray(PointArray("SignedDistance", result.VertexSignedDistance));
+  output->GetPointData()->AddArray(PointArray("DistanceLowerBound", result.VertexLowerBound));
+  output->GetPointData()->SetActiveScalars("Distance");
+  AddStatistics(output, result);
+
+  const vtkIdType ns = static_cast<vtkIdType>(result.EnvelopeSamples.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(ns);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(ns + 1);
+  connectivity->SetNumberOfTuples(ns);
+  vtkNew<vtkUnsignedCharArray> kind;
+  kind->SetName("PrimitiveKind");
+  kind->SetNumberOfTuples(ns);
+  vtkNew<vtkIdTypeArray> primitive;
+  primitive->SetName("PrimitiveId");
+  primitive->SetNumberOfTuples(ns);
+  for (vtkIdType i = 0; i < ns; ++i)
+  {
+    points->SetPoint(i, result.EnvelopeSamples[i].data());
+    offsets->SetValue(i, i);
+    connectivity->SetValue(i, i);
+    kind->SetValue(i, static_cast<unsigned char>(result.EnvelopeSamplePrimitive[i].Kind));
+    primitive->SetValue(i, result.EnvelopeSamplePrimitive[i].Id);
+  }
+  offsets->SetValue(ns, ns);
+  vtkNew<vtkCellArray> verts;
+  verts->SetData(offsets, connectivity);
+  samplesOutput->SetPoints(points);
+  samplesOutput->SetVerts(verts);
+  samplesOutput->GetPointData()->AddArray(PointArray("Distance", result.EnvelopeSampleDistance));
+  samplesOutput->GetPointData()->AddArray(kind);
+  samplesOutput->GetPointData()->AddArray(primitive);
+  samplesOutput->GetPointData()->SetActiveScalars("Distance");
+  AddStatistics(samplesOutput, result);
+
+  this->Hausdorff = result.Hausdorff;
+  this->HausdorffPercent = result.Diagonal > 0.0 ? 100.0 * result.Hausdorff / result.Diagonal : 0.0;
+  this->HausdorffSurfaceToEnvelope = result.SurfaceToEnvelope.Hausdorff;
+  this->HausdorffEnvelopeToSurface = result.EnvelopeToSurface.Hausdorff;
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkMedialReconstructionError::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
+  os << indent << "NumberOfEnvelopeSamples: " << this->NumberOfEnvelopeSamples << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "Hausdorff: " << this->Hausdorff << " (" << this->HausdorffPercent << "%)\n";
+}

@@ -14,8 +14,8 @@
 // vtkSlabReconstructor, poly data included) and "error" (reconstruction
 // error with S surface samples and S envelope samples, default 100,000).
 #include "AnalyticShapes.h"
-#include "BlueNoiseSampler.h"
 #include "AtlasSimplifier.h"
+#include "BlueNoiseSampler.h"
 #include "EnvelopeDistance.h"
 #include "EnvelopeMesher.h"
 #include "MedialMeshQuality.h"
@@ -85,7 +85,8 @@ Stage Measure(const std::string& name, F&& work)
   return { name, seconds, peak, peak - before };
 }
 
-bool LoadSurface(const std::string& spec, bool isShape, TriangleMesh& mesh, std::vector<Stage>& stages)
+bool LoadSurface(
+  const std::string& spec, bool isShape, TriangleMesh& mesh, std::vector<Stage>& stages)
 {
   if (isShape)
   {
@@ -111,7 +112,8 @@ bool LoadSurface(const std::string& spec, bool isShape, TriangleMesh& mesh, std:
     return false;
   }
   SurfacePreparationReport report;
-  stages.push_back(Measure("prepare", [&] { report = PrepareSurfaceMesh(reader->GetOutput(), mesh); }));
+  stages.push_back(
+    Measure("prepare", [&] { report = PrepareSurfaceMesh(reader->GetOutput(), mesh); }));
   if (!report.Ok())
   {
     std::cerr << spec << ": " << report.Error << "\n";
@@ -128,10 +130,12 @@ std::size_t ErrorSamples = 100000;
 void RunEnvelope(const TriangleMesh& mesh, const MedialMesh& medial, std::vector<Stage>& stages)
 {
   EnvelopeSurface surface;
-  stages.push_back(Measure("envelope", [&] {
-    const MedialEnvelope envelope(medial);
-    surface = MeshEnvelopePrimitives(envelope, EnvelopeMeshOptions());
-  }));
+  stages.push_back(Measure("envelope",
+    [&]
+    {
+      const MedialEnvelope envelope(medial);
+      surface = MeshEnvelopePrimitives(envelope, EnvelopeMeshOptions());
+    }));
   vtkNew<vtkPolyData> medialPd;
   MedialMeshToPolyData(medial, medialPd);
   vtkNew<vtkSlabReconstructor> reconstructor;
@@ -141,10 +145,12 @@ void RunEnvelope(const TriangleMesh& mesh, const MedialMesh& medial, std::vector
   ReconstructionErrorOptions options;
   options.NumberOfSamples = ErrorSamples;
   options.NumberOfEnvelopeSamples = ErrorSamples;
-  stages.push_back(Measure("error", [&] {
-    const MedialEnvelope envelope(medial);
-    error = ComputeReconstructionError(mesh, envelope, options);
-  }));
+  stages.push_back(Measure("error",
+    [&]
+    {
+      const MedialEnvelope envelope(medial);
+      error = ComputeReconstructionError(mesh, envelope, options);
+    }));
   std::printf("  envelope: %zu triangles; error (%zu + %zu vertices surface samples, %zu envelope "
               "samples of %zu candidates): Hausdorff %.4f%% (surface->envelope %.4f%%, at least "
               "%.4f%%; envelope->surface %.4f%%), mean %.4f%%, RMS %.4f%%; %zu of %zu inside "
@@ -158,7 +164,8 @@ void RunEnvelope(const TriangleMesh& mesh, const MedialMesh& medial, std::vector
     100 * error.LargestBoundGap / error.Diagonal);
 }
 
-std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples, std::size_t target, bool cad)
+std::vector<Stage> RunPipeline(
+  const TriangleMesh& mesh, std::size_t samples, std::size_t target, bool cad)
 {
   std::vector<Stage> stages;
   SurfaceSamples sites;
@@ -168,9 +175,11 @@ std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples, st
   RestrictedVoronoiDiagram rvd;
   stages.push_back(Measure("rvd", [&] { rvd = ComputeRestrictedVoronoi(mesh, sites.Points); }));
   VoronoiMedialAxisResult voronoi;
-  stages.push_back(Measure("voronoi", [&] {
-    voronoi = ComputeVoronoiMedialAxis(mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
-  }));
+  stages.push_back(Measure("voronoi",
+    [&]
+    {
+      voronoi = ComputeVoronoiMedialAxis(mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
+    }));
   std::printf("  initial MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "
               "%zu Delaunay cells, %zu exact inside tests\n",
     voronoi.Mesh.Centers.size(), voronoi.Mesh.Faces.size(), EdgesNotOnFaces(voronoi.Mesh).size(),
@@ -192,12 +201,12 @@ std::vector<Stage> RunPipeline(const TriangleMesh& mesh, std::size_t samples, st
   options.PreserveSharpFeatures = cad;
   options.TopologyGuardVertexCount = TopologyGuard;
   AtlasSimplifierResult simplified;
-  stages.push_back(Measure("simplify", [&] {
-    simplified = SimplifyMedialAxis(initial, rvd, sites.Points, options);
-  }));
+  stages.push_back(Measure(
+    "simplify", [&] { simplified = SimplifyMedialAxis(initial, rvd, sites.Points, options); }));
   const MedialMesh& m = simplified.Medial.Mesh;
-  std::printf("  simplified MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "
-              "%zu collapses, %zu rejected, %zu past the link condition, %zu past the fold guard\n",
+  std::printf(
+    "  simplified MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "
+    "%zu collapses, %zu rejected, %zu past the link condition, %zu past the fold guard\n",
     m.Centers.size(), m.Faces.size(), EdgesNotOnFaces(m).size(),
     static_cast<long long>(EulerCharacteristic(m)), simplified.Collapses,
     simplified.RejectedCollapses, simplified.RelaxedCollapses, simplified.FoldingAllowedCollapses);
@@ -269,49 +278,52 @@ int main(int argc, char* argv[])
     inputs.emplace_back("torus", true);
   }
 
-  return RunWithThreads(threads, [&] {
-    for (const auto& [spec, isShape] : inputs)
+  return RunWithThreads(threads,
+    [&]
     {
-      TriangleMesh mesh;
-      std::vector<Stage> loading;
-      if (!LoadSurface(spec, isShape, mesh, loading))
+      for (const auto& [spec, isShape] : inputs)
       {
-        return 1;
-      }
-      const std::string name = spec.substr(spec.find_last_of('/') + 1);
-      if (!scaling)
-      {
-        std::vector<Stage> stages = loading;
-        const auto run = RunPipeline(mesh, samples, target, cad);
-        stages.insert(stages.end(), run.begin(), run.end());
-        PrintStages(name, mesh.Triangles.size(), samples, stages);
-        continue;
-      }
-      const std::size_t counts[] = { 10000, 25000, 50000, 100000, 200000 };
-      std::vector<std::vector<Stage>> runs;
-      for (std::size_t n : counts)
-      {
-        runs.push_back(RunPipeline(mesh, n, n / 10, cad));
-        PrintStages(name, mesh.Triangles.size(), n, runs.back());
-      }
-      // Least-squares slope of log(time) against log(samples), per stage.
-      std::printf("%-22s growth exponent (time ~ samples^k):", name.c_str());
-      for (std::size_t s = 0; s < runs[0].size(); ++s)
-      {
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        const double n = static_cast<double>(runs.size());
-        for (std::size_t r = 0; r < runs.size(); ++r)
+        TriangleMesh mesh;
+        std::vector<Stage> loading;
+        if (!LoadSurface(spec, isShape, mesh, loading))
         {
-          const double x = std::log(double(counts[r])), y = std::log(runs[r][s].Seconds);
-          sx += x;
-          sy += y;
-          sxx += x * x;
-          sxy += x * y;
+          return 1;
         }
-        std::printf(" %s %.2f", runs[0][s].Name.c_str(), (n * sxy - sx * sy) / (n * sxx - sx * sx));
+        const std::string name = spec.substr(spec.find_last_of('/') + 1);
+        if (!scaling)
+        {
+          std::vector<Stage> stages = loading;
+          const auto run = RunPipeline(mesh, samples, target, cad);
+          stages.insert(stages.end(), run.begin(), run.end());
+          PrintStages(name, mesh.Triangles.size(), samples, stages);
+          continue;
+        }
+        const std::size_t counts[] = { 10000, 25000, 50000, 100000, 200000 };
+        std::vector<std::vector<Stage>> runs;
+        for (std::size_t n : counts)
+        {
+          runs.push_back(RunPipeline(mesh, n, n / 10, cad));
+          PrintStages(name, mesh.Triangles.size(), n, runs.back());
+        }
+        // Least-squares slope of log(time) against log(samples), per stage.
+        std::printf("%-22s growth exponent (time ~ samples^k):", name.c_str());
+        for (std::size_t s = 0; s < runs[0].size(); ++s)
+        {
+          double sx = 0, sy = 0, sxx = 0, sxy = 0;
+          const double n = static_cast<double>(runs.size());
+          for (std::size_t r = 0; r < runs.size(); ++r)
+          {
+            const double x = std::log(double(counts[r])), y = std::log(runs[r][s].Seconds);
+            sx += x;
+            sy += y;
+            sxx += x * x;
+            sxy += x * y;
+          }
+          std::printf(
+            " %s %.2f", runs[0][s].Name.c_str(), (n * sxy - sx * sy) / (n * sxx - sx * sx));
+        }
+        std::printf("\n");
       }
-      std::printf("\n");
-    }
-    return 0;
-  });
+      return 0;
+    });
 }

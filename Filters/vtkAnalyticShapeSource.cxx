@@ -31,7 +31,8 @@ medialaxis::AreaVolume Exact(vtkAnalyticShapeSource* s)
     case vtkAnalyticShapeSource::TORUS:
       return medialaxis::TorusAreaVolume(s->GetMajorRadius(), s->GetMinorRadius());
     case vtkAnalyticShapeSource::BOX:
-      return medialaxis::RoundedBoxAreaVolume({ s->GetXLength(), s->GetYLength(), s->GetZLength() }, 0.0);
+      return medialaxis::RoundedBoxAreaVolume(
+        { s->GetXLength(), s->GetYLength(), s->GetZLength() }, 0.0);
     case vtkAnalyticShapeSource::ROUNDED_BOX:
       return medialaxis::RoundedBoxAreaVolume(
         { s->GetXLength(), s->GetYLength(), s->GetZLength() }, s->GetFilletRadius());
@@ -80,7 +81,8 @@ int vtkAnalyticShapeSource::RequestData(
           { this->XLength, this->YLength, this->ZLength }, this->FilletRadius, this->Resolution);
         break;
       case L_BLOCK:
-        mesh = medialaxis::MakeLBlock({ this->XLength, this->YLength, this->ZLength }, this->Resolution);
+        mesh =
+          medialaxis::MakeLBlock({ this->XLength, this->YLength, this->ZLength }, this->Resolution);
         break;
       default:
         mesh = medialaxis::MakeCylinder(this->Radius, this->Length, this->Resolution);

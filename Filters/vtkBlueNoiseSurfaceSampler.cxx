@@ -38,7 +38,8 @@ int vtkBlueNoiseSurfaceSampler::RequestData(
   options.Seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->RandomSeed));
   options.RelaxationIterations = this->RelaxationIterations;
   options.CandidateRatio = this->CandidateRatio;
-  options.Progress = [this](double f) {
+  options.Progress = [this](double f)
+  {
     this->UpdateProgress(0.05 + 0.9 * f);
     return !this->GetAbortExecute();
   };

@@ -54,8 +54,10 @@ int vtkMedialAxisReader::RequestData(
     return 0;
   }
   medialaxis::MedialMeshToPolyData(result.Mesh, output);
-  medialaxis::AddFieldValue(output, "DuplicateEdges", static_cast<long long>(result.DuplicateEdges));
-  medialaxis::AddFieldValue(output, "DuplicateFaces", static_cast<long long>(result.DuplicateFaces));
+  medialaxis::AddFieldValue(
+    output, "DuplicateEdges", static_cast<long long>(result.DuplicateEdges));
+  medialaxis::AddFieldValue(
+    output, "DuplicateFaces", static_cast<long long>(result.DuplicateFaces));
   if (result.DuplicateEdges || result.DuplicateFaces)
   {
     vtkWarningMacro(<< name << ": dropped " << result.DuplicateFaces << " duplicate face(s) and "

@@ -27,7 +27,8 @@ int vtkMedialAxisWriter::FillInputPortInformation(int, vtkInformation* info)
 void vtkMedialAxisWriter::WriteData()
 {
   this->ErrorMessage.clear();
-  auto fail = [this](const std::string& message) {
+  auto fail = [this](const std::string& message)
+  {
     this->ErrorMessage = message;
     vtkErrorMacro(<< message);
     this->SetErrorCode(1);

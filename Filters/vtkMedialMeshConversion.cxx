@@ -30,8 +30,8 @@ void MedialMeshToPolyData(const MedialMesh& mesh, vtkPolyData* output)
   }
 
   vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(static_cast<vtkIdType>(mesh.Faces.size()),
-    3 * static_cast<vtkIdType>(mesh.Faces.size()));
+  polys->AllocateExact(
+    static_cast<vtkIdType>(mesh.Faces.size()), 3 * static_cast<vtkIdType>(mesh.Faces.size()));
   for (const auto& f : mesh.Faces)
   {
     const vtkIdType ids[3] = { f[0], f[1], f[2] };
@@ -95,7 +95,8 @@ void AddAtlasArrays(
   output->GetPointData()->AddArray(count);
 }
 
-std::string GetAtlasArrays(vtkPolyData* input, std::vector<Index>& offsets, std::vector<Index>& sites)
+std::string GetAtlasArrays(
+  vtkPolyData* input, std::vector<Index>& offsets, std::vector<Index>& sites)
 {
   offsets.clear();
   sites.clear();
@@ -116,7 +117,8 @@ std::string GetAtlasArrays(vtkPolyData* input, std::vector<Index>& offsets, std:
   for (vtkIdType i = 0; i <= nv; ++i)
   {
     offsets[i] = static_cast<Index>(offsetArray->GetComponent(i, 0));
-    if (offsets[i] < 0 || offsets[i] > siteArray->GetNumberOfTuples() || (i > 0 && offsets[i] < offsets[i - 1]))
+    if (offsets[i] < 0 || offsets[i] > siteArray->GetNumberOfTuples() ||
+      (i > 0 && offsets[i] < offsets[i - 1]))
     {
       offsets.clear();
       return "'AtlasOffsets' is not a non-decreasing list within 'AtlasSites'";
@@ -193,8 +195,7 @@ std::string PolyDataToMedialMesh(vtkPolyData* input, MedialMesh& mesh)
   if (badPolys)
   {
     mesh = MedialMesh();
-    return "medial mesh has " + std::to_string(badPolys) +
-      " polygon(s) that are not triangles";
+    return "medial mesh has " + std::to_string(badPolys) + " polygon(s) that are not triangles";
   }
   if (badLines)
   {

@@ -35,7 +35,8 @@ void AddAtlasArrays(
   vtkPolyData* output, const std::vector<Index>& offsets, const std::vector<Index>& sites);
 
 /// Reads the Atlas arrays back; returns an error message ("" on success).
-std::string GetAtlasArrays(vtkPolyData* input, std::vector<Index>& offsets, std::vector<Index>& sites);
+std::string GetAtlasArrays(
+  vtkPolyData* input, std::vector<Index>& offsets, std::vector<Index>& sites);
 
 /// Adds a one-value field-data array (a count or statistic for reports).
 void AddFieldValue(vtkPolyData* output, const char* name, long long value);

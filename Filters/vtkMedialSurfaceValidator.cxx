@@ -68,9 +68,11 @@ int vtkMedialSurfaceValidator::RequestData(
 
   vtkFieldData* fd = output->GetFieldData();
   medialaxis::AddFieldValue(output, "NumberOfMergedPoints", this->NumberOfMergedPoints);
-  medialaxis::AddFieldValue(output, "NumberOfDegenerateTriangles", this->NumberOfDegenerateTriangles);
+  medialaxis::AddFieldValue(
+    output, "NumberOfDegenerateTriangles", this->NumberOfDegenerateTriangles);
   medialaxis::AddFieldValue(output, "NumberOfDuplicateTriangles", this->NumberOfDuplicateTriangles);
-  medialaxis::AddFieldValue(output, "NumberOfReorientedTriangles", this->NumberOfReorientedTriangles);
+  medialaxis::AddFieldValue(
+    output, "NumberOfReorientedTriangles", this->NumberOfReorientedTriangles);
   medialaxis::AddFieldValue(output, "NumberOfInwardComponents", this->NumberOfInwardComponents);
   medialaxis::AddFieldValue(output, "NumberOfComponents", this->NumberOfComponents);
   AddValue(fd, "Area", this->Area);

@@ -27,7 +27,8 @@ int vtkOFFReader::RequestData(
   output->Initialize();
   this->ErrorMessage.clear();
   const std::string name = this->FileName ? this->FileName : "";
-  auto fail = [this](const std::string& message) {
+  auto fail = [this](const std::string& message)
+  {
     this->ErrorMessage = message;
     vtkErrorMacro(<< message);
     return 0;

@@ -72,12 +72,13 @@ int vtkRestrictedVoronoiDiagram::RequestData(
 
   medialaxis::RestrictedVoronoiOptions options;
   options.FeatureAngle = vtkMath::RadiansFromDegrees(this->FeatureAngle);
-  options.Progress = [this](double f) {
+  options.Progress = [this](double f)
+  {
     this->UpdateProgress(0.05 + 0.85 * f);
     return !this->GetAbortExecute();
   };
-  const medialaxis::RestrictedVoronoiDiagram rvd = medialaxis::RunWithThreads(
-    this->NumberOfThreads, [&] { return medialaxis::ComputeRestrictedVoronoi(surface, sites, options); });
+  const medialaxis::RestrictedVoronoiDiagram rvd = medialaxis::RunWithThreads(this->NumberOfThreads,
+    [&] { return medialaxis::ComputeRestrictedVoronoi(surface, sites, options); });
   if (rvd.Aborted)
   {
     return 1;

@@ -62,7 +62,8 @@ int vtkSurfaceFileReader::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
   this->ErrorMessage.clear();
-  auto fail = [this](const std::string& message) {
+  auto fail = [this](const std::string& message)
+  {
     this->ErrorMessage = message;
     vtkErrorMacro(<< message);
     return 0;
@@ -116,8 +117,8 @@ int vtkSurfaceFileReader::RequestData(
   }
   else
   {
-    return fail(name + ": unknown file extension '" + ext +
-      "' (supported: .obj .off .ply .stl .vtp .vtk)");
+    return fail(
+      name + ": unknown file extension '" + ext + "' (supported: .obj .off .ply .stl .vtp .vtk)");
   }
 
   vtkNew<ErrorCollector> errors;

@@ -57,9 +57,9 @@ SurfacePreparationReport PrepareSurfaceMesh(
   }
   if (input->GetNumberOfPolys() == 0 && input->GetNumberOfStrips() == 0)
   {
-    report.Error = "surface has no polygons (it has " +
-      std::to_string(input->GetNumberOfLines()) + " line and " +
-      std::to_string(input->GetNumberOfVerts()) + " vertex cells): a closed triangle mesh is needed";
+    report.Error = "surface has no polygons (it has " + std::to_string(input->GetNumberOfLines()) +
+      " line and " + std::to_string(input->GetNumberOfVerts()) +
+      " vertex cells): a closed triangle mesh is needed";
     return report;
   }
 
@@ -103,8 +103,8 @@ SurfacePreparationReport PrepareSurfaceMesh(
   report = PrepareSurface(soup, prepared, options);
   if (notTriangles)
   {
-    report.Notes.push_back(std::to_string(notTriangles) +
-      " polygon(s) could not be triangulated and were dropped");
+    report.Notes.push_back(
+      std::to_string(notTriangles) + " polygon(s) could not be triangulated and were dropped");
   }
   return report;
 }

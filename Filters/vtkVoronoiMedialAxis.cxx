@@ -93,12 +93,16 @@ int vtkVoronoiMedialAxis::RequestData(
   options.ConcaveFiltering = this->ConcaveFiltering;
   options.ConcaveFilterAlpha = this->ConcaveFilterAlpha;
   options.RelativeWeldTolerance = this->RelativeWeldTolerance;
-  options.Progress = [this](double f) {
+  options.Progress = [this](double f)
+  {
     this->UpdateProgress(0.05 + 0.9 * f);
     return !this->GetAbortExecute();
   };
   const medialaxis::VoronoiMedialAxisResult result = medialaxis::RunWithThreads(
-    this->NumberOfThreads, [&] { return medialaxis::ComputeVoronoiMedialAxis(surface, sites, siteTriangles, concave, options); });
+    this->NumberOfThreads,
+    [&] {
+      return medialaxis::ComputeVoronoiMedialAxis(surface, sites, siteTriangles, concave, options);
+    });
   if (result.Aborted)
   {
     return 1;
@@ -122,10 +126,12 @@ int vtkVoronoiMedialAxis::RequestData(
     sitePair->SetTypedComponent(others + static_cast<vtkIdType>(f), 1, result.FaceSitePair[f][1]);
   }
   output->GetCellData()->AddArray(sitePair);
-  for (const auto& [name, value] : { std::pair<const char*, std::size_t>{ "DelaunayCells", result.DelaunayCells },
-         { "InsideCells", result.InsideCells }, { "AmbiguousInsideTests", result.AmbiguousInsideTests },
-         { "WeldedCells", result.WeldedCells }, { "FilteredTriangles", result.FilteredFaces },
-         { "DroppedPockets", result.DroppedPockets } })
+  for (const auto& [name, value] :
+    { std::pair<const char*, std::size_t>{ "DelaunayCells", result.DelaunayCells },
+      { "InsideCells", result.InsideCells },
+      { "AmbiguousInsideTests", result.AmbiguousInsideTests },
+      { "WeldedCells", result.WeldedCells }, { "FilteredTriangles", result.FilteredFaces },
+      { "DroppedPockets", result.DroppedPockets } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }

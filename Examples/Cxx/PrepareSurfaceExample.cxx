@@ -137,7 +137,8 @@ int main(int argc, char* argv[])
             << " lines\n";
 
   vtksys::SystemTools::MakeDirectory(outputDir);
-  auto writeVtp = [&outputDir, &stem](vtkAlgorithmOutput* port, const std::string& suffix) {
+  auto writeVtp = [&outputDir, &stem](vtkAlgorithmOutput* port, const std::string& suffix)
+  {
     const std::string path = outputDir + "/" + stem + suffix + ".vtp";
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetInputConnection(port);
@@ -151,8 +152,9 @@ int main(int argc, char* argv[])
   ok = writeVtp(voronoi->GetOutputPort(), "_initial_mat") && ok;
   ok = writeVtp(simplifier->GetOutputPort(0), "_mat") && ok;
   ok = writeVtp(simplifier->GetOutputPort(1), "_correspondence") && ok;
-  for (const auto& [port, suffix] : { std::pair<vtkAlgorithmOutput*, const char*>{ voronoi->GetOutputPort(), "_initial_mat.ma" },
-         { simplifier->GetOutputPort(0), "_mat.ma" } })
+  for (const auto& [port, suffix] :
+    { std::pair<vtkAlgorithmOutput*, const char*>{ voronoi->GetOutputPort(), "_initial_mat.ma" },
+      { simplifier->GetOutputPort(0), "_mat.ma" } })
   {
     vtkNew<vtkMedialAxisWriter> maWriter;
     maWriter->SetInputConnection(port);

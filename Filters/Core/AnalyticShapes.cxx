@@ -109,7 +109,8 @@ TriangleMesh MakeRoundedBox(const Point3& sides, double filletRadius, int resolu
 
   TriangleMesh mesh;
   std::vector<Index> nodeId(static_cast<std::size_t>(n[0] * n[1] * n[2]), -1);
-  auto node = [&](Index i, Index j, Index k) {
+  auto node = [&](Index i, Index j, Index k)
+  {
     Index& id = nodeId[static_cast<std::size_t>((i * n[1] + j) * n[2] + k)];
     if (id < 0)
     {
@@ -234,7 +235,8 @@ TriangleMesh MakeCylinder(double radius, double height, int resolution)
   const int rings = std::max(1, static_cast<int>(std::lround(radius / spacing)));
   TriangleMesh mesh;
   // Side rows 0..rows (z from -h/2 to h/2), then cap rings inward, then centres.
-  auto ringPoint = [&](double r, int k, double z) {
+  auto ringPoint = [&](double r, int k, double z)
+  {
     const double t = 2.0 * Pi * k / around;
     return Point3{ r * std::cos(t), r * std::sin(t), z };
   };
@@ -314,7 +316,8 @@ TriangleMesh MakeLBlock(const Point3& sides, int resolution)
   // and an outside cell, as two triangles, over shared grid nodes.
   const int n = std::max(resolution, 1);
   const int cells[3] = { 2 * n, 2 * n, 2 * n };
-  auto inside = [&](int i, int j, int k) {
+  auto inside = [&](int i, int j, int k)
+  {
     if (i < 0 || j < 0 || k < 0 || i >= cells[0] || j >= cells[1] || k >= cells[2])
     {
       return false;
@@ -323,7 +326,8 @@ TriangleMesh MakeLBlock(const Point3& sides, int resolution)
   };
   TriangleMesh mesh;
   std::vector<Index> nodeId(static_cast<std::size_t>(2 * n + 1) * (2 * n + 1) * (2 * n + 1), -1);
-  auto node = [&](int i, int j, int k) {
+  auto node = [&](int i, int j, int k)
+  {
     Index& id = nodeId[(static_cast<std::size_t>(i) * (2 * n + 1) + j) * (2 * n + 1) + k];
     if (id < 0)
     {

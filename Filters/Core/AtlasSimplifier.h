@@ -66,8 +66,8 @@ struct AtlasSimplifierResult
   /// Made after every collapse that keeps triangles from folding onto each
   /// other was exhausted (e.g. tubes whose sheets shrink to a curve).
   std::size_t FoldingAllowedCollapses = 0;
-  std::size_t MergedFaces = 0;       // faces merged away: each closes a tetrahedral bubble
-  std::size_t SnappedVertices = 0;   // feature vertices moved onto sharp edges
+  std::size_t MergedFaces = 0;     // faces merged away: each closes a tetrahedral bubble
+  std::size_t SnappedVertices = 0; // feature vertices moved onto sharp edges
   /// Feature vertices snapped although that made a zero-area or folded
   /// triangle; the collapses around them go first to repair it.
   std::size_t ForcedSnaps = 0;

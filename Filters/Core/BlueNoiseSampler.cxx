@@ -105,7 +105,8 @@ std::vector<std::uint32_t> EliminateSamples(
   const double rMax = std::sqrt(area / (2.0 * std::sqrt(3.0) * target));
   const double rMin = rMax * (1.0 - std::pow(double(target) / double(m), gamma)) * beta;
   const double reach = 2.0 * rMax;
-  auto weight = [&](double d) {
+  auto weight = [&](double d)
+  {
     d = std::max(std::min(d, reach), 2.0 * rMin); // weight limiting
     const double x = 1.0 - d / reach;
     const double x2 = x * x, x4 = x2 * x2;
@@ -121,7 +122,8 @@ std::vector<std::uint32_t> EliminateSamples(
   std::vector<std::uint32_t> rowSize(m);
   std::vector<double> total(m, 0.0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1),
-    [&](const tbb::blocked_range<std::size_t>& r) {
+    [&](const tbb::blocked_range<std::size_t>& r)
+    {
       std::vector<std::pair<std::uint32_t, double>> matches;
       for (std::size_t b = r.begin(); b != r.end(); ++b)
       {
@@ -171,9 +173,8 @@ std::vector<std::uint32_t> EliminateSamples(
     float Weight; // 8-byte nodes: four children share one cache line
     std::uint32_t Id;
   };
-  auto above = [](const Node& a, const Node& b) {
-    return a.Weight != b.Weight ? a.Weight > b.Weight : a.Id < b.Id;
-  };
+  auto above = [](const Node& a, const Node& b)
+  { return a.Weight != b.Weight ? a.Weight > b.Weight : a.Id < b.Id; };
   std::vector<Node> heap(m);
   std::vector<std::uint32_t> position(m);
   for (std::uint32_t i = 0; i < m; ++i)
@@ -181,7 +182,8 @@ std::vector<std::uint32_t> EliminateSamples(
     heap[i] = { static_cast<float>(total[i]), i };
   }
   std::size_t heapSize = m;
-  auto siftDown = [&](std::size_t k) {
+  auto siftDown = [&](std::size_t k)
+  {
     const Node item = heap[k];
     for (;;)
     {
@@ -254,8 +256,8 @@ std::vector<std::uint32_t> EliminateSamples(
 
 // One Lloyd step: every site moves to the point of its own restricted cell's
 // triangles nearest to the cell's centroid.
-bool RelaxOnce(const TriangleMesh& surface, SurfaceSamples& samples,
-  const std::function<bool(double)>& progress)
+bool RelaxOnce(
+  const TriangleMesh& surface, SurfaceSamples& samples, const std::function<bool(double)>& progress)
 {
   RestrictedVoronoiOptions options;
   options.Progress = progress;
@@ -282,7 +284,8 @@ bool RelaxOnce(const TriangleMesh& surface, SurfaceSamples& samples,
     }
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ns, 1024),
-    [&](const tbb::blocked_range<std::size_t>& r) {
+    [&](const tbb::blocked_range<std::size_t>& r)
+    {
       for (std::size_t i = r.begin(); i != r.end(); ++i)
       {
         if (first[i] == first[i + 1])
@@ -362,7 +365,8 @@ SurfaceSamples SampleSurface(const TriangleMesh& surface, const SamplingOptions&
   for (int it = 0; it < options.RelaxationIterations; ++it)
   {
     const double start = share * (1 + it);
-    const bool ok = RelaxOnce(surface, samples, [&](double f) { return report(start + share * f); });
+    const bool ok =
+      RelaxOnce(surface, samples, [&](double f) { return report(start + share * f); });
     if (!ok)
     {
       samples = SurfaceSamples();

@@ -69,8 +69,9 @@ private:
       return false;
     }
   };
-  using Tree_t = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, CloudAdaptor>,
-    CloudAdaptor, 3, std::uint32_t>;
+  using Tree_t =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, CloudAdaptor>,
+      CloudAdaptor, 3, std::uint32_t>;
 
   CloudAdaptor Cloud;
   Tree_t Tree;

@@ -54,7 +54,8 @@ void AppendDouble(std::string& out, double value)
 MaReadResult ParseMa(std::istream& input)
 {
   MaReadResult result;
-  auto fail = [&result](std::size_t line, const std::string& what) {
+  auto fail = [&result](std::size_t line, const std::string& what)
+  {
     result.Error = AtLine(line, what);
     result.Mesh = MedialMesh();
     return result;
@@ -116,14 +117,14 @@ MaReadResult ParseMa(std::istream& input)
     }
     else
     {
-      return fail(lineNumber,
-        "unknown record '" + std::string(tokens[0]) + "' (expected 'v', 'e' or 'f')");
+      return fail(
+        lineNumber, "unknown record '" + std::string(tokens[0]) + "' (expected 'v', 'e' or 'f')");
     }
     if (static_cast<std::int64_t>(seen[kind]) >= counts[kind])
     {
       return fail(lineNumber,
-        std::string("more ") + kindNames[kind] + " lines than the " +
-          std::to_string(counts[kind]) + " announced in the header");
+        std::string("more ") + kindNames[kind] + " lines than the " + std::to_string(counts[kind]) +
+          " announced in the header");
     }
     ++seen[kind];
 
@@ -166,8 +167,8 @@ MaReadResult ParseMa(std::istream& input)
     {
       if (!ParseInteger(tokens[k + 1], ids[k]))
       {
-        return fail(lineNumber,
-          "'" + std::string(tokens[k + 1]) + "' is not a vertex index (an integer)");
+        return fail(
+          lineNumber, "'" + std::string(tokens[k + 1]) + "' is not a vertex index (an integer)");
       }
       if (ids[k] < 0 || ids[k] >= counts[0])
       {

@@ -22,9 +22,9 @@ namespace medialaxis
 struct MaReadResult
 {
   MedialMesh Mesh;
-  std::string Error;               // empty on success; names the line number
-  std::size_t DuplicateEdges = 0;  // dropped while reading
-  std::size_t DuplicateFaces = 0;  // dropped while reading
+  std::string Error;              // empty on success; names the line number
+  std::size_t DuplicateEdges = 0; // dropped while reading
+  std::size_t DuplicateFaces = 0; // dropped while reading
   bool Ok() const { return this->Error.empty(); }
 };
 

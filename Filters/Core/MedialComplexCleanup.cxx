@@ -59,7 +59,8 @@ void Compact(VoronoiMedialAxisResult& result, const std::vector<char>& vertexAli
 }
 }
 
-std::size_t CollapseFlaggedTriangles(VoronoiMedialAxisResult& result, const std::vector<char>& flagged)
+std::size_t CollapseFlaggedTriangles(
+  VoronoiMedialAxisResult& result, const std::vector<char>& flagged)
 {
   MedialMesh& mesh = result.Mesh;
   const std::size_t nf = mesh.Faces.size(), nv = mesh.Centers.size();
@@ -68,7 +69,8 @@ std::size_t CollapseFlaggedTriangles(VoronoiMedialAxisResult& result, const std:
     return 0;
   }
   // Per-vertex incidences (compressed rows): faces, and Voronoi edges.
-  auto buildRows = [nv](std::size_t count, auto&& forEach) {
+  auto buildRows = [nv](std::size_t count, auto&& forEach)
+  {
     std::vector<std::size_t> start(nv + 1, 0);
     forEach([&start](Index v, Index) { ++start[v + 1]; });
     for (std::size_t v = 0; v < nv; ++v)
@@ -81,22 +83,26 @@ std::size_t CollapseFlaggedTriangles(VoronoiMedialAxisResult& result, const std:
     (void)count;
     return std::make_pair(std::move(start), std::move(items));
   };
-  const auto [faceStart, vertexFaces] = buildRows(3 * nf, [&mesh](auto&& add) {
-    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
+  const auto [faceStart, vertexFaces] = buildRows(3 * nf,
+    [&mesh](auto&& add)
     {
-      for (Index v : mesh.Faces[f])
+      for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
       {
-        add(v, static_cast<Index>(f));
+        for (Index v : mesh.Faces[f])
+        {
+          add(v, static_cast<Index>(f));
+        }
       }
-    }
-  });
-  const auto [lineStart, vertexLines] = buildRows(2 * mesh.Edges.size(), [&mesh](auto&& add) {
-    for (std::size_t e = 0; e < mesh.Edges.size(); ++e)
+    });
+  const auto [lineStart, vertexLines] = buildRows(2 * mesh.Edges.size(),
+    [&mesh](auto&& add)
     {
-      add(mesh.Edges[e][0], static_cast<Index>(e));
-      add(mesh.Edges[e][1], static_cast<Index>(e));
-    }
-  });
+      for (std::size_t e = 0; e < mesh.Edges.size(); ++e)
+      {
+        add(mesh.Edges[e][0], static_cast<Index>(e));
+        add(mesh.Edges[e][1], static_cast<Index>(e));
+      }
+    });
 
   std::vector<char> faceAlive(nf, 1), edgeAlive(mesh.Edges.size(), 1);
   std::vector<int> aliveFaces(nv, 0);
@@ -107,12 +113,14 @@ std::size_t CollapseFlaggedTriangles(VoronoiMedialAxisResult& result, const std:
       ++aliveFaces[v];
     }
   }
-  auto contains = [&mesh](Index f, Index v) {
+  auto contains = [&mesh](Index f, Index v)
+  {
     const auto& t = mesh.Faces[f];
     return t[0] == v || t[1] == v || t[2] == v;
   };
   // Alive triangles on edge (a, b), and one flagged one among them.
-  auto trianglesOn = [&](Index a, Index b, Index* flaggedFace) {
+  auto trianglesOn = [&](Index a, Index b, Index* flaggedFace)
+  {
     int count = 0;
     for (std::size_t i = faceStart[a]; i < faceStart[a + 1]; ++i)
     {
@@ -128,7 +136,8 @@ std::size_t CollapseFlaggedTriangles(VoronoiMedialAxisResult& result, const std:
     }
     return count;
   };
-  auto killVoronoiEdge = [&](Index a, Index b) {
+  auto killVoronoiEdge = [&](Index a, Index b)
+  {
     for (std::size_t i = lineStart[a]; i < lineStart[a + 1]; ++i)
     {
       const auto& e = mesh.Edges[vertexLines[i]];
@@ -194,7 +203,8 @@ std::size_t CollapseFlaggedTriangles(VoronoiMedialAxisResult& result, const std:
   // 2. Voronoi edges left dangling are collapsed through vertices that
   // nothing else uses (no triangle and no other edge).
   std::vector<char> vertexAlive(nv, 1);
-  auto aliveLinesAt = [&](Index v, Index* only) {
+  auto aliveLinesAt = [&](Index v, Index* only)
+  {
     int count = 0;
     for (std::size_t i = lineStart[v]; i < lineStart[v + 1]; ++i)
     {

@@ -15,7 +15,8 @@ namespace medialaxis
 /// the edges and vertices it leaves dangling are collapsed in turn. The
 /// complex therefore keeps its homotopy type; flagged triangles enclosed by
 /// others stay. Returns the number of triangles removed.
-std::size_t CollapseFlaggedTriangles(VoronoiMedialAxisResult& result, const std::vector<char>& flagged);
+std::size_t CollapseFlaggedTriangles(
+  VoronoiMedialAxisResult& result, const std::vector<char>& flagged);
 
 /// Drops connected pieces with fewer than `minimumVertices` vertices:
 /// isolated pockets of Delaunay cells whose circumcentres are inside while

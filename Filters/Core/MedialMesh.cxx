@@ -56,14 +56,13 @@ MedialMeshCheck ValidateMedialMesh(const MedialMesh& mesh)
   for (std::size_t i = 0; i < nv; ++i)
   {
     const Point3& p = mesh.Centers[i];
-    nonFinitePoints +=
-      (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) ? 0 : 1;
+    nonFinitePoints += (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) ? 0 : 1;
     badRadii += (std::isfinite(mesh.Radii[i]) && mesh.Radii[i] >= 0.0) ? 0 : 1;
   }
   if (nonFinitePoints)
   {
-    check.Message = "medial mesh has " + Plural(nonFinitePoints, "vertex") +
-      " with NaN or infinite coordinates";
+    check.Message =
+      "medial mesh has " + Plural(nonFinitePoints, "vertex") + " with NaN or infinite coordinates";
     return check;
   }
   if (badRadii)
@@ -160,14 +159,15 @@ std::vector<std::array<Index, 2>> EdgesNotOnFaces(const MedialMesh& mesh)
 
 long long EulerCharacteristic(const MedialMesh& mesh)
 {
-  return static_cast<long long>(mesh.Centers.size()) - static_cast<long long>(AllEdges(mesh).size()) +
-    static_cast<long long>(mesh.Faces.size());
+  return static_cast<long long>(mesh.Centers.size()) -
+    static_cast<long long>(AllEdges(mesh).size()) + static_cast<long long>(mesh.Faces.size());
 }
 
 std::vector<Index> IsolatedVertices(const MedialMesh& mesh)
 {
   std::vector<char> used(mesh.Centers.size(), 0);
-  auto mark = [&used](Index i) {
+  auto mark = [&used](Index i)
+  {
     if (i >= 0 && static_cast<std::size_t>(i) < used.size())
     {
       used[i] = 1;

@@ -11,7 +11,8 @@ namespace medialaxis
 OffReadResult ParseOff(std::istream& input)
 {
   OffReadResult result;
-  auto fail = [&result](std::size_t line, const std::string& what) {
+  auto fail = [&result](std::size_t line, const std::string& what)
+  {
     result.Error = "line " + std::to_string(line) + ": " + what;
     result.Mesh = PolygonMesh();
     return result;
@@ -47,8 +48,8 @@ OffReadResult ParseOff(std::istream& input)
         keyword.find_first_not_of("STCNOF4") == std::string_view::npos;
       if (!isOff)
       {
-        return fail(lineNumber, "not an OFF file: expected 'OFF', found '" +
-            std::string(keyword) + "'");
+        return fail(
+          lineNumber, "not an OFF file: expected 'OFF', found '" + std::string(keyword) + "'");
       }
       if (keyword.find('4') != std::string_view::npos)
       {
@@ -73,8 +74,9 @@ OffReadResult ParseOff(std::istream& input)
       }
       if (!ParseInteger(tokens[0], nv) || nv < 0 || !ParseInteger(tokens[1], nf) || nf < 0)
       {
-        return fail(lineNumber, "counts '" + std::string(tokens[0]) + " " +
-            std::string(tokens[1]) + "' are not non-negative integers");
+        return fail(lineNumber,
+          "counts '" + std::string(tokens[0]) + " " + std::string(tokens[1]) +
+            "' are not non-negative integers");
       }
       result.Mesh.Points.reserve(std::min<std::size_t>(nv, reserveCap));
       result.Mesh.Offsets.reserve(std::min<std::size_t>(nf, reserveCap) + 1);
@@ -85,8 +87,8 @@ OffReadResult ParseOff(std::istream& input)
     {
       if (tokens.size() < 3)
       {
-        return fail(lineNumber, "vertex line needs 3 coordinates, found " +
-            std::to_string(tokens.size()));
+        return fail(
+          lineNumber, "vertex line needs 3 coordinates, found " + std::to_string(tokens.size()));
       }
       Point3 p;
       for (int k = 0; k < 3; ++k)
@@ -108,12 +110,13 @@ OffReadResult ParseOff(std::istream& input)
     std::int64_t n = 0;
     if (!ParseInteger(tokens[0], n) || n < 1)
     {
-      return fail(lineNumber, "polygon size '" + std::string(tokens[0]) +
-          "' is not a positive integer");
+      return fail(
+        lineNumber, "polygon size '" + std::string(tokens[0]) + "' is not a positive integer");
     }
     if (static_cast<std::int64_t>(tokens.size()) < n + 1)
     {
-      return fail(lineNumber, "polygon announces " + std::to_string(n) + " vertices but lists " +
+      return fail(lineNumber,
+        "polygon announces " + std::to_string(n) + " vertices but lists " +
           std::to_string(tokens.size() - 1));
     }
     ids.resize(static_cast<std::size_t>(n));
@@ -121,13 +124,13 @@ OffReadResult ParseOff(std::istream& input)
     {
       if (!ParseInteger(tokens[k + 1], ids[k]))
       {
-        return fail(lineNumber, "'" + std::string(tokens[k + 1]) +
-            "' is not a vertex index (an integer)");
+        return fail(
+          lineNumber, "'" + std::string(tokens[k + 1]) + "' is not a vertex index (an integer)");
       }
       if (ids[k] < 0 || ids[k] >= nv)
       {
-        return fail(lineNumber, "vertex index " + std::to_string(ids[k]) + " is outside [0, " +
-            std::to_string(nv) + ")");
+        return fail(lineNumber,
+          "vertex index " + std::to_string(ids[k]) + " is outside [0, " + std::to_string(nv) + ")");
       }
     }
     result.Mesh.AddPolygon(ids.data(), ids.size());
@@ -148,12 +151,13 @@ OffReadResult ParseOff(std::istream& input)
     case Stage::Counts:
       return fail(lineNumber, "end of file before the counts 'nv nf ne'");
     case Stage::Vertices:
-      return fail(lineNumber, "end of file after " + std::to_string(result.Mesh.Points.size()) +
-          " of " + std::to_string(nv) + " vertices");
+      return fail(lineNumber,
+        "end of file after " + std::to_string(result.Mesh.Points.size()) + " of " +
+          std::to_string(nv) + " vertices");
     case Stage::Faces:
-      return fail(lineNumber, "end of file after " +
-          std::to_string(result.Mesh.NumberOfPolygons()) + " of " + std::to_string(nf) +
-          " polygons");
+      return fail(lineNumber,
+        "end of file after " + std::to_string(result.Mesh.NumberOfPolygons()) + " of " +
+          std::to_string(nf) + " polygons");
     case Stage::Done:
       break;
   }

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "RestrictedVoronoi.h"
 
+#include "DisjointSets.h"
 #include "KdTree.h"
 #include "TriangleAdjacency.h"
-#include "DisjointSets.h"
 #include "Vec3.h"
 
 #include <tbb/blocked_range.h>
@@ -138,7 +138,8 @@ public:
     this->NeighbourIds.resize(ns * k);
     this->NeighbourD2.resize(ns * k);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ns, 1024),
-      [&](const tbb::blocked_range<std::size_t>& r) {
+      [&](const tbb::blocked_range<std::size_t>& r)
+      {
         std::vector<std::uint32_t> ids;
         std::vector<double> d2;
         for (std::size_t i = r.begin(); i != r.end(); ++i)
@@ -281,9 +282,8 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
   {
     return rvd;
   }
-  auto report = [&options](double fraction) {
-    return !options.Progress || options.Progress(fraction);
-  };
+  auto report = [&options](double fraction)
+  { return !options.Progress || options.Progress(fraction); };
 
   RvdBuilder builder(surface, sites);
   builder.CacheNeighbours();
@@ -295,18 +295,21 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
 
   const std::size_t blocks = (nt + BlockSize - 1) / BlockSize;
   std::vector<BlockOutput> outputs(blocks);
-  tbb::enumerable_thread_specific<ThreadState> states([ns] {
-    ThreadState s;
-    s.Stamp.assign(ns, 0);
-    return s;
-  });
+  tbb::enumerable_thread_specific<ThreadState> states(
+    [ns]
+    {
+      ThreadState s;
+      s.Stamp.assign(ns, 0);
+      return s;
+    });
   // Batches between which progress is reported and abort is honoured.
   const std::size_t batches = std::min<std::size_t>(20, blocks);
   for (std::size_t batch = 0; batch < batches; ++batch)
   {
     const std::size_t first = blocks * batch / batches, last = blocks * (batch + 1) / batches;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 1),
-      [&](const tbb::blocked_range<std::size_t>& r) {
+      [&](const tbb::blocked_range<std::size_t>& r)
+      {
         ThreadState& state = states.local();
         for (std::size_t block = r.begin(); block != r.end(); ++block)
         {
@@ -357,8 +360,7 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
   rvd.CellCentroid.resize(ns);
   for (std::size_t i = 0; i < ns; ++i)
   {
-    rvd.CellCentroid[i] =
-      rvd.CellArea[i] > 0.0 ? (0.5 / rvd.CellArea[i]) * weighted[i] : sites[i];
+    rvd.CellCentroid[i] = rvd.CellArea[i] > 0.0 ? (0.5 / rvd.CellArea[i]) * weighted[i] : sites[i];
   }
 
   // Feature flags and connected pieces of every cell.

@@ -119,13 +119,12 @@ std::vector<Index> MergeCoincidentPoints(
   return representative;
 }
 
-
 // Replaces zero-area "needle" triangles (three distinct but collinear
 // vertices, common in CAD exports) by splitting the neighbour across their
 // longest edge at the middle vertex, which keeps the surface closed.
 // Returns the number of needles removed; unresolvable needles are kept.
-std::size_t RemoveNeedles(const std::vector<Point3>& points, std::vector<Triangle>& triangles,
-  std::size_t& splitNeighbours)
+std::size_t RemoveNeedles(
+  const std::vector<Point3>& points, std::vector<Triangle>& triangles, std::size_t& splitNeighbours)
 {
   std::vector<std::size_t> needles;
   for (std::size_t t = 0; t < triangles.size(); ++t)
@@ -242,8 +241,8 @@ double WindingNumber(const Point3& p, const std::vector<Point3>& points,
   return total / (4.0 * Pi);
 }
 
-double SignedVolumeOf(
-  const std::vector<Point3>& points, const std::vector<Triangle>& triangles, const std::vector<Index>& subset)
+double SignedVolumeOf(const std::vector<Point3>& points, const std::vector<Triangle>& triangles,
+  const std::vector<Index>& subset)
 {
   if (subset.empty())
   {
@@ -275,8 +274,8 @@ double SurfaceArea(const TriangleMesh& mesh)
   double twiceArea = 0.0;
   for (const Triangle& t : mesh.Triangles)
   {
-    twiceArea += Norm(Cross((mesh.Points[t[1]] - mesh.Points[t[0]]),
-      (mesh.Points[t[2]] - mesh.Points[t[0]])));
+    twiceArea +=
+      Norm(Cross((mesh.Points[t[1]] - mesh.Points[t[0]]), (mesh.Points[t[2]] - mesh.Points[t[0]])));
   }
   return 0.5 * twiceArea;
 }
@@ -332,8 +331,8 @@ SurfacePreparationReport PrepareSurface(
   }
   if (report.NonFinitePoints)
   {
-    report.Error = "surface has " +
-      Count(report.NonFinitePoints, "point", "points") + " with NaN or infinite coordinates";
+    report.Error = "surface has " + Count(report.NonFinitePoints, "point", "points") +
+      " with NaN or infinite coordinates";
     return report;
   }
   const double diagonal = Norm((hi - lo));
@@ -409,8 +408,8 @@ SurfacePreparationReport PrepareSurface(
   }
   if (triangles.empty())
   {
-    report.Error = "surface has no valid triangles: all " +
-      std::to_string(report.InputTriangles) + " are degenerate or duplicates";
+    report.Error = "surface has no valid triangles: all " + std::to_string(report.InputTriangles) +
+      " are degenerate or duplicates";
     return report;
   }
 
@@ -451,8 +450,8 @@ SurfacePreparationReport PrepareSurface(
   {
     if (report.BoundaryEdges)
     {
-      report.Error = "surface is not closed: " +
-        Count(report.BoundaryEdges, "boundary edge", "boundary edges");
+      report.Error =
+        "surface is not closed: " + Count(report.BoundaryEdges, "boundary edge", "boundary edges");
     }
     if (report.NonManifoldEdges)
     {
@@ -466,7 +465,8 @@ SurfacePreparationReport PrepareSurface(
   // 6. Non-manifold vertices: the corners around a vertex must form one fan.
   {
     DisjointSets corners(3 * triangles.size());
-    auto cornerOf = [&triangles](Index t, Index v) {
+    auto cornerOf = [&triangles](Index t, Index v)
+    {
       const Triangle& tri = triangles[t];
       return 3 * t + (tri[0] == v ? 0 : (tri[1] == v ? 1 : 2));
     };
@@ -655,7 +655,8 @@ SurfacePreparationReport PrepareSurface(
     return report;
   }
 
-  auto note = [&report](std::size_t n, const char* singular, const char* plural, const char* what) {
+  auto note = [&report](std::size_t n, const char* singular, const char* plural, const char* what)
+  {
     if (n)
     {
       report.Notes.push_back(Count(n, singular, plural) + ' ' + what);

@@ -36,7 +36,8 @@ TriangleAdjacency ComputeTriangleAdjacency(const TriangleMesh& mesh, double feat
   TriangleAdjacency adjacency;
   adjacency.Neighbour.assign(nt, { -1, -1, -1 });
   adjacency.Feature.assign(nt, { EdgeFeature::None, EdgeFeature::None, EdgeFeature::None });
-  auto localEdge = [&mesh](Index t, Index lo, Index hi) {
+  auto localEdge = [&mesh](Index t, Index lo, Index hi)
+  {
     const Triangle& tri = mesh.Triangles[t];
     for (int k = 0; k < 3; ++k)
     {

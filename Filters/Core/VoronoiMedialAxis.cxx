@@ -4,9 +4,9 @@
 #include "VoronoiMedialAxis.h"
 
 #include "DisjointSets.h"
-#include "TriangleAdjacency.h"
 #include "MedialComplexCleanup.h"
 #include "SurfacePreparation.h"
+#include "TriangleAdjacency.h"
 #include "Vec3.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -78,7 +78,8 @@ public:
     {
       this->Mesh.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]);
     }
-    this->TreePtr = std::make_unique<Tree>(faces(this->Mesh).first, faces(this->Mesh).second, this->Mesh);
+    this->TreePtr =
+      std::make_unique<Tree>(faces(this->Mesh).first, faces(this->Mesh).second, this->Mesh);
     this->TreePtr->build();
     this->TreePtr->accelerate_distance_queries();
     this->Side = std::make_unique<SideOfMesh>(*this->TreePtr);
@@ -103,10 +104,7 @@ public:
     }
   }
 
-  bool Inside(const Point3& p) const
-  {
-    return (*this->Side)(ToKernel(p)) == CGAL::ON_BOUNDED_SIDE;
-  }
+  bool Inside(const Point3& p) const { return (*this->Side)(ToKernel(p)) == CGAL::ON_BOUNDED_SIDE; }
 
   /// Inside test by the closest surface point and the angle-weighted
   /// pseudo-normal of the face, edge or vertex it lies on (Baerentzen and
@@ -115,8 +113,8 @@ public:
   /// `nearPoint` on triangle `nearTriangle` bounds the search.
   bool InsideByPseudoNormal(const Point3& p, const Point3& nearPoint, Index nearTriangle) const
   {
-    const Tree::Point_and_primitive_id hint(
-      ToKernel(nearPoint), SurfaceMesh::Face_index(static_cast<SurfaceMesh::size_type>(nearTriangle)));
+    const Tree::Point_and_primitive_id hint(ToKernel(nearPoint),
+      SurfaceMesh::Face_index(static_cast<SurfaceMesh::size_type>(nearTriangle)));
     const auto hit = this->TreePtr->closest_point_and_primitive(ToKernel(p), hint);
     const Point3 q = ToPoint(hit.first);
     const Index f = static_cast<Index>(hit.second.idx());
@@ -142,7 +140,8 @@ public:
       const int opposite = w[0] < eps ? 0 : (w[1] < eps ? 1 : 2);
       const int k = (opposite + 1) % 3;
       const Index across = this->Adjacency.Neighbour[f][k];
-      normal = this->FaceNormals[f] + (across >= 0 ? this->FaceNormals[across] : this->FaceNormals[f]);
+      normal =
+        this->FaceNormals[f] + (across >= 0 ? this->FaceNormals[across] : this->FaceNormals[f]);
     }
     else
     {
@@ -194,7 +193,8 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
     return result;
   }
   auto report = [&options](double f) { return !options.Progress || options.Progress(f); };
-  auto abort = []() {
+  auto abort = []()
+  {
     VoronoiMedialAxisResult empty;
     empty.Aborted = true;
     return empty;
@@ -233,8 +233,8 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
     std::sort(key.begin(), key.end());
     keyed.emplace_back(key, c);
   }
-  std::sort(keyed.begin(), keyed.end(),
-    [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(
+    keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<Delaunay::Cell_handle> cells;
   cells.reserve(keyed.size());
   for (auto& [key, c] : keyed)
@@ -258,7 +258,8 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   std::vector<Point3> centre(nc);
   std::vector<char> inside(nc, 0), ambiguous(nc, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 4096),
-    [&](const tbb::blocked_range<std::size_t>& r) {
+    [&](const tbb::blocked_range<std::size_t>& r)
+    {
       for (std::size_t c = r.begin(); c != r.end(); ++c)
       {
         const auto& cell = cells[c];
@@ -284,7 +285,8 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   {
     siteTriangle.resize(sites.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sites.size(), 1024),
-      [&](const tbb::blocked_range<std::size_t>& r) {
+      [&](const tbb::blocked_range<std::size_t>& r)
+      {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
         {
           siteTriangle[i] = queries.NearestTriangle(sites[i]);
@@ -313,9 +315,11 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   // ball's centre can be behind all four tangent planes and still outside,
   // past another part of the surface.
   constexpr double clearCosine = 0.1;
-  const double smallRadius = 4.0 * std::sqrt(2.0 * SurfaceArea(surface) / (std::sqrt(3.0) * sites.size()));
+  const double smallRadius =
+    4.0 * std::sqrt(2.0 * SurfaceArea(surface) / (std::sqrt(3.0) * sites.size()));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 1024),
-    [&](const tbb::blocked_range<std::size_t>& r) {
+    [&](const tbb::blocked_range<std::size_t>& r)
+    {
       for (std::size_t c = r.begin(); c != r.end(); ++c)
       {
         const Point3& x = centre[c];
@@ -456,7 +460,8 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   {
     if (vertexOf[a] != vertexOf[b])
     {
-      mesh.Edges.push_back({ std::min(vertexOf[a], vertexOf[b]), std::max(vertexOf[a], vertexOf[b]) });
+      mesh.Edges.push_back(
+        { std::min(vertexOf[a], vertexOf[b]), std::max(vertexOf[a], vertexOf[b]) });
     }
   }
   decltype(adjacentInside)().swap(adjacentInside);
@@ -481,12 +486,15 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   std::vector<Index> polygons, polygon;
   // Each Delaunay edge is circulated once over the flat cell arrays: the
   // cells around it are marked (6 local edges per cell) as they are visited.
-  static constexpr int edgeEnds[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
-  auto localIndex = [&cellSites](Index c, Index site) {
+  static constexpr int edgeEnds[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 },
+    { 2, 3 } };
+  auto localIndex = [&cellSites](Index c, Index site)
+  {
     const auto& s = cellSites[c];
     return s[0] == site ? 0 : (s[1] == site ? 1 : (s[2] == site ? 2 : 3));
   };
-  auto localEdge = [](int i, int j) {
+  auto localEdge = [](int i, int j)
+  {
     if (i > j)
     {
       std::swap(i, j);

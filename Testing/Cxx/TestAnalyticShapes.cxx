@@ -36,8 +36,8 @@ double RoundedBoxDistance(const double* p, double hx, double hy, double hz, doub
 {
   const double q[3] = { Clamp(p[0], -(hx - rho), hx - rho), Clamp(p[1], -(hy - rho), hy - rho),
     Clamp(p[2], -(hz - rho), hz - rho) };
-  const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-    (p[2] - q[2]) * (p[2] - q[2]));
+  const double d = std::sqrt(
+    (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
   return std::fabs(d - rho);
 }
 
@@ -49,26 +49,31 @@ double BoxDistance(const double* p, double h)
 
 const ShapeCase Cases[] = {
   { "Sphere", vtkAnalyticShapeSource::SPHERE, [](vtkAnalyticShapeSource* s) { s->SetRadius(1.5); },
-    [](const double* p) { return std::fabs(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 1.5); } },
+    [](const double* p)
+    { return std::fabs(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 1.5); } },
   { "Capsule", vtkAnalyticShapeSource::CAPSULE,
-    [](vtkAnalyticShapeSource* s) {
+    [](vtkAnalyticShapeSource* s)
+    {
       s->SetRadius(0.5);
       s->SetLength(2.0);
     },
     [](const double* p) { return RoundedBoxDistance(p, 0.5, 0.5, 1.5, 0.5); } },
   { "Torus", vtkAnalyticShapeSource::TORUS,
-    [](vtkAnalyticShapeSource* s) {
+    [](vtkAnalyticShapeSource* s)
+    {
       s->SetMajorRadius(2.0);
       s->SetMinorRadius(0.5);
     },
-    [](const double* p) {
+    [](const double* p)
+    {
       const double ring = std::sqrt(p[0] * p[0] + p[1] * p[1]) - 2.0;
       return std::fabs(std::sqrt(ring * ring + p[2] * p[2]) - 0.5);
     } },
   { "Box", vtkAnalyticShapeSource::BOX, [](vtkAnalyticShapeSource*) {},
     [](const double* p) { return BoxDistance(p, 1.0); } },
   { "RoundedBox", vtkAnalyticShapeSource::ROUNDED_BOX,
-    [](vtkAnalyticShapeSource* s) {
+    [](vtkAnalyticShapeSource* s)
+    {
       s->SetXLength(2.0);
       s->SetYLength(1.0);
       s->SetZLength(3.0);
@@ -76,18 +81,22 @@ const ShapeCase Cases[] = {
     },
     [](const double* p) { return RoundedBoxDistance(p, 1.0, 0.5, 1.5, 0.2); } },
   { "Cylinder", vtkAnalyticShapeSource::CYLINDER,
-    [](vtkAnalyticShapeSource* s) {
+    [](vtkAnalyticShapeSource* s)
+    {
       s->SetRadius(1.0);
       s->SetLength(3.0);
     },
-    [](const double* p) {
+    [](const double* p)
+    {
       const double radial = std::sqrt(p[0] * p[0] + p[1] * p[1]);
       const double side = std::fabs(radial - 1.0);
       const double cap = std::fabs(std::fabs(p[2]) - 1.5);
-      return std::min(radial <= 1.0 + 1e-12 ? cap : 1e9, std::fabs(p[2]) <= 1.5 + 1e-12 ? side : 1e9);
+      return std::min(
+        radial <= 1.0 + 1e-12 ? cap : 1e9, std::fabs(p[2]) <= 1.5 + 1e-12 ? side : 1e9);
     } },
   { "LBlock", vtkAnalyticShapeSource::L_BLOCK, [](vtkAnalyticShapeSource*) {},
-    [](const double* p) {
+    [](const double* p)
+    {
       double d = std::min({ 1.0 - std::fabs(p[0]), 1.0 - std::fabs(p[1]), 1.0 - std::fabs(p[2]) });
       if (p[0] >= -1e-12 && p[1] >= -1e-12)
       {

@@ -19,9 +19,9 @@
 #include "TestHelpers.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkImplicitPolyDataDistance.h"
-#include "vtkDataArray.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 
@@ -44,8 +44,8 @@ struct SimplifiedRun
   AtlasSimplifierResult Result;
 };
 
-SimplifiedRun Simplify(const TriangleMesh& surface, std::size_t samples, std::size_t target, bool cad,
-  bool concaveFiltering = true, bool invaginatedTerm = true)
+SimplifiedRun Simplify(const TriangleMesh& surface, std::size_t samples, std::size_t target,
+  bool cad, bool concaveFiltering = true, bool invaginatedTerm = true)
 {
   SimplifiedRun run;
   SamplingOptions sampling;
@@ -164,8 +164,8 @@ std::vector<std::array<Index, 2>> BoundaryEdges(const MedialMesh& m)
   std::vector<std::array<Index, 2>> boundary;
   for (std::size_t i = 0; i < edges.size(); ++i)
   {
-    const bool single = (i == 0 || edges[i - 1] != edges[i]) &&
-      (i + 1 == edges.size() || edges[i + 1] != edges[i]);
+    const bool single =
+      (i == 0 || edges[i - 1] != edges[i]) && (i + 1 == edges.size() || edges[i + 1] != edges[i]);
     if (single)
     {
       boundary.push_back(edges[i]);
@@ -255,7 +255,8 @@ TEST(AtlasSimplifier, AblationsOnAnLBlock)
     std::size_t NearEdgeTriangles = 0;
     double MeanBulge = 0.0; // radius minus distance to the surface
   };
-  auto measure = [&](const MedialMesh& m) {
+  auto measure = [&](const MedialMesh& m)
+  {
     Measure out;
     auto nearEdge = [&m](Index v) { return std::hypot(m.Centers[v][0], m.Centers[v][1]) < 0.3; };
     for (const auto& t : m.Faces)
@@ -272,7 +273,8 @@ TEST(AtlasSimplifier, AblationsOnAnLBlock)
   };
   const Measure full = measure(Simplify(block, 20000, 2000, true).Result.Medial.Mesh);
   const Measure unfiltered = measure(Simplify(block, 20000, 2000, true, false).Result.Medial.Mesh);
-  const Measure planar = measure(Simplify(block, 20000, 2000, true, true, false).Result.Medial.Mesh);
+  const Measure planar =
+    measure(Simplify(block, 20000, 2000, true, true, false).Result.Medial.Mesh);
   std::cout << "triangles at the concave edge: " << full.NearEdgeTriangles << " (unfiltered "
             << unfiltered.NearEdgeTriangles << "); mean bulge " << full.MeanBulge
             << " (without the site term " << planar.MeanBulge << ")\n";
@@ -290,7 +292,8 @@ TEST(AtlasSimplifier, OutputIsValidAndDeterministic)
   EXPECT_TRUE(ValidateMedialMesh(ma).IsValid()) << ValidateMedialMesh(ma).Message;
   EXPECT_EQ(DegenerateTriangles(ma), 0u);
   ASSERT_EQ(ma.Centers.size(), mb.Centers.size());
-  EXPECT_EQ(0, std::memcmp(ma.Centers.data(), mb.Centers.data(), ma.Centers.size() * sizeof(Point3)));
+  EXPECT_EQ(
+    0, std::memcmp(ma.Centers.data(), mb.Centers.data(), ma.Centers.size() * sizeof(Point3)));
   EXPECT_EQ(ma.Faces, mb.Faces);
   EXPECT_EQ(a.Result.Medial.AtlasSites, b.Result.Medial.AtlasSites);
   for (double r : ma.Radii)
@@ -354,7 +357,8 @@ TEST(AtlasMedialAxisSimplifierFilter, BadInputsGiveClearErrors)
   voronoi->Update();
   rvd->Update();
 
-  auto run = [](vtkPolyData* mat, vtkPolyData* cells) {
+  auto run = [](vtkPolyData* mat, vtkPolyData* cells)
+  {
     vtkNew<vtkAtlasMedialAxisSimplifier> simplifier;
     vtkNew<test::ErrorCatcher> errors;
     simplifier->AddObserver(vtkCommand::ErrorEvent, errors);

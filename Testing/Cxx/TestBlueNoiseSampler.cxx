@@ -98,7 +98,8 @@ TEST(BlueNoiseSampler, SpacingOnUnitSphere)
   EXPECT_LT(blue.Variation, 0.15);
   // The same measure on white noise (no elimination) shows what it detects.
   const Spacing white = MeasureSpacing(Sample(sphere, 5000, 1, 1.0).Points, area);
-  std::cout << "white noise: min/ideal " << white.MinOverIdeal << ", CV " << white.Variation << "\n";
+  std::cout << "white noise: min/ideal " << white.MinOverIdeal << ", CV " << white.Variation
+            << "\n";
   EXPECT_GT(white.Variation, 0.4);
   EXPECT_LT(white.MinOverIdeal, 0.1);
 }

@@ -44,8 +44,8 @@ MedialMesh RandomMesh(unsigned seed)
   {
     m.Faces.push_back({ i, i + 1, i + 2 });
   }
-  m.Edges.push_back({ 0, 5 });   // a cone edge
-  m.Edges.push_back({ 1, 0 });   // an edge of face 0
+  m.Edges.push_back({ 0, 5 }); // a cone edge
+  m.Edges.push_back({ 1, 0 }); // an edge of face 0
   return m;
 }
 
@@ -127,8 +127,8 @@ struct MalformedCase
 {
   const char* Name;
   const char* Text;
-  int Line;            // line the message must name
-  const char* Phrase;  // words the message must contain
+  int Line;           // line the message must name
+  const char* Phrase; // words the message must contain
 };
 
 class MaMalformed : public ::testing::TestWithParam<MalformedCase>
@@ -153,8 +153,8 @@ INSTANTIATE_TEST_SUITE_P(AllCases, MaMalformed,
     MalformedCase{ "HeaderNotNumber", "3 x 1\n", 1, "'x' is not a non-negative integer" },
     MalformedCase{ "HeaderNegative", "-3 0 0\n", 1, "not a non-negative integer" },
     MalformedCase{ "FewerVertices", "3 0 0\nv 0 0 0 1\nv 1 1 1 1\n", 3, "2 of the 3 vertex" },
-    MalformedCase{ "FewerFaces", "3 0 2\nv 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 0 1 2\n", 5,
-      "1 of the 2 face" },
+    MalformedCase{
+      "FewerFaces", "3 0 2\nv 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 0 1 2\n", 5, "1 of the 2 face" },
     MalformedCase{ "MoreFacesThanAnnounced",
       "3 0 1\nv 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 0 1 2\nf 0 2 1\n", 6, "more face lines" },
     MalformedCase{ "IndexOutOfRange", "2 1 0\nv 0 0 0 1\nv 1 0 0 1\ne 0 2\n", 4,
@@ -164,11 +164,11 @@ INSTANTIATE_TEST_SUITE_P(AllCases, MaMalformed,
     MalformedCase{ "NaNRadius", "1 0 0\nv 0 0 0 nan\n", 2, "not finite" },
     MalformedCase{ "InfCoordinate", "1 0 0\nv inf 0 0 1\n", 2, "not finite" },
     MalformedCase{ "NonNumericCoordinate", "1 0 0\nv 0 zero 0 1\n", 2, "'zero' is not a number" },
-    MalformedCase{ "NonNumericIndex", "2 1 0\nv 0 0 0 1\nv 1 0 0 1\ne 0 1.5\n", 4,
-      "not a vertex index" },
+    MalformedCase{
+      "NonNumericIndex", "2 1 0\nv 0 0 0 1\nv 1 0 0 1\ne 0 1.5\n", 4, "not a vertex index" },
     MalformedCase{ "MissingRadius", "1 0 0\nv 0 0 0\n", 2, "needs 4 numbers" },
-    MalformedCase{ "FaceRepeatsVertex", "3 0 1\nv 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 0 1 1\n",
-      5, "repeats vertex 1" },
+    MalformedCase{ "FaceRepeatsVertex", "3 0 1\nv 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 0 1 1\n", 5,
+      "repeats vertex 1" },
     MalformedCase{ "UnknownRecord", "1 0 0\nx 0 0 0 1\n", 2, "unknown record 'x'" }),
   [](const ::testing::TestParamInfo<MalformedCase>& info) { return info.param.Name; });
 
@@ -203,9 +203,9 @@ TEST(MaReaderWriter, VtkRoundTripIsBitExact)
     ExpectBitIdentical(r0->GetComponent(i, 0), r1->GetComponent(i, 0));
   }
   EXPECT_EQ(out->GetNumberOfPolys(), pd->GetNumberOfPolys());
-  EXPECT_EQ(out->GetNumberOfLines(), 1);      // the cone edge 0-5
+  EXPECT_EQ(out->GetNumberOfLines(), 1); // the cone edge 0-5
   EXPECT_EQ(out->GetNumberOfVerts(), pd->GetNumberOfVerts());
-  EXPECT_EQ(out->GetNumberOfVerts(), 2);      // 198, 199 are isolated spheres
+  EXPECT_EQ(out->GetNumberOfVerts(), 2); // 198, 199 are isolated spheres
 }
 
 TEST(MaReaderWriter, MalformedFileGivesEmptyOutputAndMessage)

@@ -85,7 +85,8 @@ TEST(MedialMeshValidation, PolyDataContract)
   // A line cell that repeats a triangle edge breaks the contract.
   const vtkIdType edge[2] = { 0, 1 };
   pd->GetLines()->InsertNextCell(2, edge);
-  EXPECT_NE(ValidateMedialPolyData(pd).find("duplicating an edge of a triangle"), std::string::npos);
+  EXPECT_NE(
+    ValidateMedialPolyData(pd).find("duplicating an edge of a triangle"), std::string::npos);
 
   vtkNew<vtkPolyData> quad;
   MedialMeshToPolyData(TwoTriangles(), quad);

@@ -56,8 +56,7 @@ TEST(OffReader, MalformedFiles)
   };
   const Case cases[] = { { "", "line 0: empty file" },
     { "PLY\n3 1 0\n", "line 1: not an OFF file" },
-    { "OFF\n", "line 1: end of file before the counts" },
-    { "OFF\n3 x 0\n", "line 2: counts" },
+    { "OFF\n", "line 1: end of file before the counts" }, { "OFF\n3 x 0\n", "line 2: counts" },
     { "OFF\n3 1 0\n0 0 0\n1 0 0\n", "line 4: end of file after 2 of 3 vertices" },
     { "OFF\n3 1 0\n0 0 0\n1 0 0\n0 one 0\n3 0 1 2\n", "line 5: 'one' is not a number" },
     { "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "line 6: vertex index 3 is outside [0, 3)" },

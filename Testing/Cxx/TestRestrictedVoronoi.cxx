@@ -145,9 +145,8 @@ double RelativeAreaError(const RestrictedVoronoiDiagram& rvd, const TriangleMesh
 
 TEST(RestrictedVoronoi, AreaIsConserved)
 {
-  for (const TriangleMesh& mesh :
-    { MakeSphere(1.0, 16), MakeTorus(2.0, 0.5, 8), MakeRoundedBox({ 2, 1, 1 }, 0.2, 8),
-      MakeLBlock({ 2, 2, 1 }, 4) })
+  for (const TriangleMesh& mesh : { MakeSphere(1.0, 16), MakeTorus(2.0, 0.5, 8),
+         MakeRoundedBox({ 2, 1, 1 }, 0.2, 8), MakeLBlock({ 2, 2, 1 }, 4) })
   {
     const RestrictedVoronoiDiagram rvd = ComputeRestrictedVoronoi(mesh, SitesOn(mesh, 3000));
     EXPECT_LT(RelativeAreaError(rvd, mesh), 1e-9);
@@ -226,7 +225,8 @@ TEST(RestrictedVoronoi, ThinPlateCellsKeepBothPieces)
   std::vector<double> bottomArea(sites.size(), 0.0);
   for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)
   {
-    if (rvd.Vertices[rvd.Offsets[p]][2] < -0.0099 && rvd.Vertices[rvd.Offsets[p] + 1][2] < -0.0099 &&
+    if (rvd.Vertices[rvd.Offsets[p]][2] < -0.0099 &&
+      rvd.Vertices[rvd.Offsets[p] + 1][2] < -0.0099 &&
       rvd.Vertices[rvd.Offsets[p] + 2][2] < -0.0099)
     {
       bottomArea[rvd.PolygonSite[p]] += 1.0;
@@ -305,10 +305,12 @@ TEST(RestrictedVoronoi, IdenticalWithOneOrTwoThreads)
   const auto one = RunWithThreads(1, [&] { return ComputeRestrictedVoronoi(mesh, sites); });
   const auto two = RunWithThreads(2, [&] { return ComputeRestrictedVoronoi(mesh, sites); });
   ASSERT_EQ(one.Vertices.size(), two.Vertices.size());
-  EXPECT_EQ(0, std::memcmp(one.Vertices.data(), two.Vertices.data(), one.Vertices.size() * sizeof(Point3)));
+  EXPECT_EQ(
+    0, std::memcmp(one.Vertices.data(), two.Vertices.data(), one.Vertices.size() * sizeof(Point3)));
   EXPECT_EQ(one.PolygonSite, two.PolygonSite);
   EXPECT_EQ(one.PolygonTriangle, two.PolygonTriangle);
-  EXPECT_EQ(0, std::memcmp(one.CellArea.data(), two.CellArea.data(), one.CellArea.size() * sizeof(double)));
+  EXPECT_EQ(
+    0, std::memcmp(one.CellArea.data(), two.CellArea.data(), one.CellArea.size() * sizeof(double)));
   EXPECT_EQ(one.CellComponents, two.CellComponents);
 }
 
@@ -330,8 +332,8 @@ TEST(RestrictedVoronoiDiagram, FilterPipelineAndArrays)
   ASSERT_NE(cells->GetCellData()->GetArray("SiteId"), nullptr);
   ASSERT_NE(cells->GetCellData()->GetArray("TriangleId"), nullptr);
   ASSERT_EQ(sites->GetNumberOfPoints(), 800);
-  for (const char* name :
-    { "CellArea", "CellCentroid", "ConvexFeature", "ConcaveFeature", "CellComponents", "Normals", "TriangleId" })
+  for (const char* name : { "CellArea", "CellCentroid", "ConvexFeature", "ConcaveFeature",
+         "CellComponents", "Normals", "TriangleId" })
   {
     EXPECT_NE(sites->GetPointData()->GetArray(name), nullptr) << name;
   }

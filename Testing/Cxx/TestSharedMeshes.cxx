@@ -2,16 +2,16 @@
 // Every real mesh of the shared test set (see its SOURCES.md for origin and
 // terms) reads and prepares into a closed, manifold, outward surface whose
 // genus matches the one SOURCES.md gives. Skipped when the set is absent.
-#include "TestHelpers.h"
 #include "AtlasSimplifier.h"
 #include "BlueNoiseSampler.h"
 #include "MedialMeshQuality.h"
 #include "RestrictedVoronoi.h"
+#include "TestHelpers.h"
 #include "VoronoiMedialAxis.h"
 #include "vtkMedialSurfaceValidator.h"
 #include "vtkSelectEnclosedPoints.h"
-#include "vtkSurfacePreparation.h"
 #include "vtkSurfaceFileReader.h"
+#include "vtkSurfacePreparation.h"
 
 #include "vtkCellArray.h"
 #include "vtkPolyData.h"
@@ -121,10 +121,13 @@ double WindingNumber(const medialaxis::TriangleMesh& surface, const medialaxis::
       b[k] = surface.Points[t[1]][k] - p[k];
       c[k] = surface.Points[t[2]][k] - p[k];
     }
-    auto dot = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+    auto dot = [](const double* u, const double* v)
+    { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
     const double la = std::sqrt(dot(a, a)), lb = std::sqrt(dot(b, b)), lc = std::sqrt(dot(c, c));
-    const double bc[3] = { b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2], b[0] * c[1] - b[1] * c[0] };
-    total += 2.0 * std::atan2(dot(a, bc), la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb);
+    const double bc[3] = { b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2],
+      b[0] * c[1] - b[1] * c[0] };
+    total +=
+      2.0 * std::atan2(dot(a, bc), la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb);
   }
   return total / (4.0 * 3.14159265358979323846);
 }
@@ -188,8 +191,8 @@ TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
   sampling.NumberOfSamples = 10000;
   const auto sites = medialaxis::SampleSurface(surface, sampling);
   const auto rvd = medialaxis::ComputeRestrictedVoronoi(surface, sites.Points);
-  const auto mat =
-    medialaxis::ComputeVoronoiMedialAxis(surface, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
+  const auto mat = medialaxis::ComputeVoronoiMedialAxis(
+    surface, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
   const auto& mesh = mat.Mesh;
   ASSERT_GT(mesh.Centers.size(), 0u);
   EXPECT_TRUE(medialaxis::ValidateMedialMesh(mesh).IsValid());
@@ -270,10 +273,11 @@ TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
     EXPECT_EQ(quality.FoldedTriangles, 0u) << name;
   }
   const long long simplifiedChi = medialaxis::EulerCharacteristic(small);
-  std::cout << name << ": simplified to " << small.Centers.size() << " vertices, Euler characteristic "
-            << simplifiedChi << ", " << simplified.MergedFaces << " bubbles closed, "
-            << simplified.RelaxedCollapses << " collapses past the link condition, "
-            << simplified.FoldingAllowedCollapses << " past the fold guard\n";
+  std::cout << name << ": simplified to " << small.Centers.size()
+            << " vertices, Euler characteristic " << simplifiedChi << ", " << simplified.MergedFaces
+            << " bubbles closed, " << simplified.RelaxedCollapses
+            << " collapses past the link condition, " << simplified.FoldingAllowedCollapses
+            << " past the fold guard\n";
   if (simplified.RelaxedCollapses == 0)
   {
     EXPECT_EQ(simplifiedChi, chi - static_cast<long long>(simplified.MergedFaces)) << name;
@@ -287,7 +291,8 @@ INSTANTIATE_TEST_SUITE_P(All, SharedMesh,
     "fertility.off", "gearwheel.stl", "hand.obj", "horse.ply", "igea.ply", "joint.off",
     "kitten.obj", "octopus.off", "pinion.off", "rocker-arm.obj", "spot.obj", "thingi_69058.stl",
     "vessel.off"),
-  [](const ::testing::TestParamInfo<const char*>& info) {
+  [](const ::testing::TestParamInfo<const char*>& info)
+  {
     std::string n = info.param;
     for (char& c : n)
     {
@@ -310,7 +315,7 @@ TEST(SurfaceFileReader, UnknownExtensionAndMissingFile)
   std::ofstream("mesh.xyz") << "1 2 3\n";
   reader->Modified();
   reader->Update();
-  EXPECT_NE(std::string(reader->GetErrorMessage()).find("unknown file extension '.xyz'"),
-    std::string::npos)
+  EXPECT_NE(
+    std::string(reader->GetErrorMessage()).find("unknown file extension '.xyz'"), std::string::npos)
     << reader->GetErrorMessage();
 }

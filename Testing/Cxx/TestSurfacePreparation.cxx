@@ -110,7 +110,8 @@ TEST(SurfacePreparation, BowTieVertex)
   TriangleMesh out;
   const auto r = Prepare(Append(a, b), out);
   EXPECT_EQ(r.NonManifoldVertices, 1u);
-  EXPECT_EQ(r.Error, "surface is not manifold: 1 vertex joins several separate sheets of triangles");
+  EXPECT_EQ(
+    r.Error, "surface is not manifold: 1 vertex joins several separate sheets of triangles");
 }
 
 TEST(SurfacePreparation, InconsistentOrientationIsFixed)
@@ -126,7 +127,8 @@ TEST(SurfacePreparation, InconsistentOrientationIsFixed)
   EXPECT_TRUE(Prepare(out, again, false).Ok()); // the result is consistent
 
   const auto refused = Prepare(cube, out, false);
-  EXPECT_EQ(refused.Error, "surface orientation is inconsistent: 1 triangle disagrees with its neighbours");
+  EXPECT_EQ(
+    refused.Error, "surface orientation is inconsistent: 1 triangle disagrees with its neighbours");
 }
 
 TEST(SurfacePreparation, InwardOrientationIsFlipped)
@@ -176,9 +178,9 @@ TEST(SurfacePreparation, TriangleSoupBecomesClosed)
 TEST(SurfacePreparation, DegenerateAndDuplicateTrianglesAreDropped)
 {
   TriangleMesh cube = UnitCube();
-  cube.Triangles.push_back({ 0, 0, 1 });     // repeated vertex
+  cube.Triangles.push_back({ 0, 0, 1 });       // repeated vertex
   cube.Triangles.push_back(cube.Triangles[0]); // exact duplicate
-  cube.Triangles.push_back({ 3, 0, 2 });     // same triangle, rotated
+  cube.Triangles.push_back({ 3, 0, 2 });       // same triangle, rotated
   TriangleMesh out;
   const auto r = Prepare(cube, out);
   ASSERT_TRUE(r.Ok()) << r.Error;
@@ -245,7 +247,8 @@ TEST(SurfacePreparation, NonOrientableSurfaceIsRefused)
       k.Points.push_back({ double(i), double(j), double((i * 7 + j * 3) % 5) });
     }
   }
-  auto id = [&](int i, int j) {
+  auto id = [&](int i, int j)
+  {
     if (i == n)
     {
       i = 0;

@@ -53,7 +53,8 @@ Pipeline RunPipeline(const TriangleMesh& surface, std::size_t samples, bool conc
   p.Rvd = ComputeRestrictedVoronoi(surface, p.Sites.Points);
   VoronoiMedialAxisOptions options;
   options.ConcaveFiltering = concaveFiltering;
-  p.Mat = ComputeVoronoiMedialAxis(surface, p.Sites.Points, p.Sites.TriangleIds, p.Rvd.ConcaveFeature, options);
+  p.Mat = ComputeVoronoiMedialAxis(
+    surface, p.Sites.Points, p.Sites.TriangleIds, p.Rvd.ConcaveFeature, options);
   return p;
 }
 
@@ -144,7 +145,8 @@ TEST(VoronoiMedialAxis, CoSphericalSitesWeldToTheCentre)
       far += Norm(mat.Mesh.Centers[v]) > 0.02 || std::fabs(mat.Mesh.Radii[v] - 1.0) > 0.02 ? 1 : 0;
     }
   }
-  std::cout << mat.Mesh.Centers.size() << " vertices after welding " << mat.WeldedCells << " cells\n";
+  std::cout << mat.Mesh.Centers.size() << " vertices after welding " << mat.WeldedCells
+            << " cells\n";
   EXPECT_EQ(far, 0u);
   EXPECT_GT(mat.WeldedCells, 1000u);
   EXPECT_EQ(EulerCharacteristic(mat.Mesh), 1);
@@ -192,7 +194,8 @@ TEST(VoronoiMedialAxis, BoxVerticesInsideWithBoundedRadii)
     EXPECT_TRUE(std::fabs(c[0]) <= 1.0 && std::fabs(c[1]) <= 0.5 && std::fabs(c[2]) <= 0.3);
     largest = std::max(largest, p.Mat.Mesh.Radii[v]);
   }
-  std::cout << "largest radius " << largest << " (half the smallest side 0.3, bound " << bound << ")\n";
+  std::cout << "largest radius " << largest << " (half the smallest side 0.3, bound " << bound
+            << ")\n";
   EXPECT_LE(largest, bound);
   EXPECT_EQ(EulerCharacteristic(p.Mat.Mesh), 1);
 }
@@ -212,7 +215,8 @@ TEST(VoronoiMedialAxis, ConcaveFilteringOnAnLBlock)
   ASSERT_GT(on.Mat.FilteredFaces, 0u);
   const auto& sites = on.Sites.Points;
   const auto& concave = on.Rvd.ConcaveFeature;
-  auto distanceToSurface = [&block](const Point3& x) {
+  auto distanceToSurface = [&block](const Point3& x)
+  {
     double best = HUGE_VAL;
     for (const Triangle& t : block.Triangles)
     {
@@ -233,7 +237,8 @@ TEST(VoronoiMedialAxis, ConcaveFilteringOnAnLBlock)
     }
     return best;
   };
-  auto failsEq4 = [&](const std::array<Index, 2>& pair) {
+  auto failsEq4 = [&](const std::array<Index, 2>& pair)
+  {
     const Point3& s1 = sites[pair[0]];
     const Point3& s2 = sites[pair[1]];
     return concave[pair[0]] && concave[pair[1]] &&

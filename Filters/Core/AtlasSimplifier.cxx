@@ -917,17 +917,30 @@ std::size_t Simplifier::FoldsAroundMerged(Index a, Index b, const Point3& newPos
   {
     // Ring edge (u, v) between (a, u, v) and the faces across it.
     const Index u = ring[i][0], v = ring[i][1];
+    // Scan the shorter face list of the two; stop at a second face (the
+    // edge is then non-manifold and cannot fold).
+    const auto& candidates = this->VertexFaces[u].size() <= this->VertexFaces[v].size()
+      ? this->VertexFaces[u]
+      : this->VertexFaces[v];
     std::size_t count = 0;
     Index y = -1;
-    for (Index f : this->VertexFaces[u])
+    for (Index f : candidates)
     {
+      if (!this->FaceAlive[f])
+      {
+        continue;
+      }
       const auto& o = this->Faces[f];
+      const bool hasU = o[0] == u || o[1] == u || o[2] == u;
       const bool hasV = o[0] == v || o[1] == v || o[2] == v;
       const bool hasAB = o[0] == a || o[1] == a || o[2] == a || o[0] == b || o[1] == b || o[2] == b;
-      if (this->FaceAlive[f] && hasV && !hasAB)
+      if (hasU && hasV && !hasAB)
       {
-        ++count;
         y = o[0] != u && o[0] != v ? o[0] : (o[1] != u && o[1] != v ? o[1] : o[2]);
+        if (++count > 1)
+        {
+          break;
+        }
       }
     }
     if (count == 1 && IsFold(position(u), position(v), newPosition, position(y)))

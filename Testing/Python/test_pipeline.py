@@ -187,6 +187,39 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(validator.GetOutput().GetNumberOfPoints(), 0)
         self.assertTrue(errors.messages)
 
+    def test_one_click_filter_and_atlas_of_one_sphere(self):
+        shape = medialaxis.vtkAnalyticShapeSource()
+        shape.SetShapeToRoundedBox()
+        shape.SetFilletRadius(0.2)
+        shape.SetResolution(12)
+        structural = medialaxis.vtkStructuralMedialAxis()
+        structural.SetInputConnection(shape.GetOutputPort())
+        structural.SetPresetToCAD()
+        structural.SetNumberOfSamples(3000)
+        structural.SetTargetNumberOfVertices(300)
+        progress = []
+        structural.AddObserver("ProgressEvent",
+                               lambda obj, event: progress.append(obj.GetProgress()))
+        structural.Update()
+        mat = structural.GetOutput(0)
+        self.assertEqual(mat.GetNumberOfPoints(), 300)
+        self.assertGreater(mat.GetNumberOfPolys(), 0)
+        fields = mat.GetFieldData()
+        total = fields.GetArray("TotalSeconds").GetValue(0)
+        stages = sum(fields.GetArray(name + "Seconds").GetValue(0) for name in (
+            "Sampling", "RestrictedVoronoi", "VoronoiMedialAxis", "Simplification"))
+        self.assertAlmostEqual(total, stages, places=12)
+        self.assertEqual(fields.GetArray("Sites").GetValue(0), 3000)
+        self.assertEqual(progress[-1], 1.0)
+        # The whole Atlas of sphere 0: cells of the correspondence output.
+        atlas = medialaxis.vtkExtractMedialAtlas()
+        atlas.SetInputConnection(0, structural.GetOutputPort(0))
+        atlas.SetInputConnection(1, structural.GetOutputPort(1))
+        atlas.SetMedialVertexId(0)
+        atlas.Update()
+        self.assertGreater(atlas.GetOutput().GetNumberOfCells(), 0)
+        self.assertGreater(atlas.GetOutput().GetFieldData().GetArray("AtlasArea").GetValue(0), 0)
+
     def test_envelope_and_reconstruction_error(self):
         # A capsule's medial mesh: two spheres and the edge between them.
         text = "2 1 0\nv 0 0 -1 0.5\nv 0 0 1 0.5\ne 0 1\n"

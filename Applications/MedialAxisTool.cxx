@@ -1,0 +1,543 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// medial-axis: the Structural MAT of a closed triangle surface from the
+// command line. See PrintHelp() for the options and exit codes.
+#include "MedialMesh.h"
+#include "MedialMeshQuality.h"
+#include "vtkMedialAxisWriter.h"
+#include "vtkMedialMeshConversion.h"
+#include "vtkMedialReconstructionError.h"
+#include "vtkMedialSurfaceValidator.h"
+#include "vtkSlabReconstructor.h"
+#include "vtkStructuralMedialAxis.h"
+#include "vtkSurfaceFileReader.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkLogger.h"
+#include "vtkNew.h"
+#include "vtkOutputWindow.h"
+#include "vtkPolyData.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+enum ExitCode
+{
+  Ok = 0,
+  BadArguments = 2,
+  BadInput = 3,
+  ComputationFailed = 4
+};
+
+void PrintHelp()
+{
+  std::cout <<
+    R"(Usage: medial-axis [options] INPUT OUTPUT_DIR
+
+Computes the Structural Medial Axis Transform of the closed triangle surface
+INPUT (OBJ, OFF, PLY, STL, VTP or VTK) and writes into OUTPUT_DIR:
+  mat.ma, mat.vtp       the simplified medial mesh (spheres: points with point
+                        data Radius; slabs: triangles; cones: lines)
+and, on request, the files below.
+
+Options:
+  --preset cad|organic  the paper's settings: cad = 50,000 samples, 5,000
+                        spheres, sharp features preserved; organic (default)
+                        = 10,000 samples, 1,000 spheres
+  --samples N           surface samples (overrides the preset)
+  --target N            spheres left after simplification (overrides the preset)
+  --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not
+  --feature-angle DEG   dihedral tolerance for sharp edges (default 45)
+  --seed S              sampler seed; same seed, same result (default 0)
+  --threads T           threads for the parallel stages (0 = all, default)
+  --envelope            also write envelope.vtp: the union of the medial
+                        primitives (spheres, cones, slabs) as triangles
+  --correspondence      also write correspondence.vtp: the surface cut into
+                        the sites' cells with MedialVertexId per cell
+  --error               measure the two-sided Hausdorff distance between the
+                        surface and the envelope (% of the bounding-box
+                        diagonal) and write distance.vtp (the surface with
+                        point data Distance)
+  --report FILE         write a JSON report: parameters, per-stage times, peak
+                        memory, counts, Euler characteristic, triangle quality
+                        and (with --error) the Hausdorff distances
+  --quiet               no progress bar (it is shown only on a terminal)
+  -h, --help            this text
+
+Exit codes: 0 done; 2 bad arguments; 3 unreadable or invalid input (the
+message names the defect, e.g. an open surface and its boundary edges);
+4 the computation failed.
+)";
+}
+
+struct Options
+{
+  std::string Input, OutputDir, Report;
+  vtkIdType Samples = -1, Target = -1;
+  int Sharp = -1; // -1: from the preset
+  bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false;
+  double FeatureAngle = 45.0;
+  int Seed = 0, Threads = 0;
+};
+
+bool ParseNumber(const std::string& text, double& value)
+{
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && end && *end == '\0';
+}
+
+// Returns an error message, or "" when the arguments are usable.
+std::string Parse(int argc, char** argv, Options& o, bool& help)
+{
+  std::vector<std::string> positional;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&](double& out) -> std::string
+    {
+      if (i + 1 >= argc)
+      {
+        return arg + " needs a value";
+      }
+      if (!ParseNumber(argv[++i], out))
+      {
+        return arg + " needs a number, got '" + argv[i] + "'";
+      }
+      return "";
+    };
+    double number = 0.0;
+    std::string problem;
+    if (arg == "-h" || arg == "--help")
+    {
+      help = true;
+    }
+    else if (arg == "--preset")
+    {
+      if (i + 1 >= argc)
+      {
+        return "--preset needs cad or organic";
+      }
+      const std::string preset = argv[++i];
+      if (preset != "cad" && preset != "organic")
+      {
+        return "--preset must be cad or organic, got '" + preset + "'";
+      }
+      o.Cad = preset == "cad";
+    }
+    else if (arg == "--samples" || arg == "--target")
+    {
+      if (!(problem = value(number)).empty())
+      {
+        return problem;
+      }
+      if (!(number >= 1.0 && number <= 1e8) ||
+        number != static_cast<double>(static_cast<long long>(number)))
+      {
+        return arg + " must be a whole number from 1 to 100000000";
+      }
+      (arg == "--samples" ? o.Samples : o.Target) = static_cast<vtkIdType>(number);
+    }
+    else if (arg == "--feature-angle")
+    {
+      if (!(problem = value(number)).empty())
+      {
+        return problem;
+      }
+      if (!(number >= 0.0 && number <= 180.0))
+      {
+        return "--feature-angle must be between 0 and 180 degrees";
+      }
+      o.FeatureAngle = number;
+    }
+    else if (arg == "--seed" || arg == "--threads")
+    {
+      if (!(problem = value(number)).empty())
+      {
+        return problem;
+      }
+      if (!(number >= 0.0 && number <= 2147483647.0))
+      {
+        return arg + " must be a non-negative whole number";
+      }
+      (arg == "--seed" ? o.Seed : o.Threads) = static_cast<int>(number);
+    }
+    else if (arg == "--report")
+    {
+      if (i + 1 >= argc)
+      {
+        return "--report needs a file name";
+      }
+      o.Report = argv[++i];
+    }
+    else if (arg == "--sharp" || arg == "--no-sharp")
+    {
+      o.Sharp = arg == "--sharp" ? 1 : 0;
+    }
+    else if (arg == "--envelope")
+    {
+      o.Envelope = true;
+    }
+    else if (arg == "--correspondence")
+    {
+      o.Correspondence = true;
+    }
+    else if (arg == "--error")
+    {
+      o.Error = true;
+    }
+    else if (arg == "--quiet")
+    {
+      o.Quiet = true;
+    }
+    else if (!arg.empty() && arg[0] == '-')
+    {
+      return "unknown option " + arg + " (see --help)";
+    }
+    else
+    {
+      positional.push_back(arg);
+    }
+  }
+  if (help)
+  {
+    return "";
+  }
+  if (positional.size() != 2)
+  {
+    return "expected INPUT and OUTPUT_DIR (see --help)";
+  }
+  o.Input = positional[0];
+  o.OutputDir = positional[1];
+  return "";
+}
+
+// Progress bar on stderr, redrawn when the percentage changes.
+struct ProgressBar
+{
+  std::string Label;
+  int Last = -1;
+  static void Callback(vtkObject* caller, unsigned long, void* clientData, void*)
+  {
+    auto* self = static_cast<ProgressBar*>(clientData);
+    const double f = static_cast<vtkAlgorithm*>(caller)->GetProgress();
+    const int percent = static_cast<int>(100.0 * f);
+    if (percent == self->Last)
+    {
+      return;
+    }
+    self->Last = percent;
+    const int width = 40, filled = percent * width / 100;
+    std::fprintf(stderr, "\r%-12s [%s%s] %3d%%", self->Label.c_str(),
+      std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(), percent);
+    if (percent >= 100)
+    {
+      std::fputc('\n', stderr);
+    }
+    std::fflush(stderr);
+  }
+};
+
+// Collects the last error of an algorithm (printed by us, not by VTK).
+struct LastError
+{
+  std::string Message;
+  static void Callback(vtkObject*, unsigned long, void* clientData, void* callData)
+  {
+    std::string text = callData ? static_cast<const char*>(callData) : "";
+    const std::size_t start = text.find("): ");
+    text = start == std::string::npos ? text : text.substr(start + 3);
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    {
+      text.pop_back();
+    }
+    static_cast<LastError*>(clientData)->Message = text;
+  }
+};
+
+void Observe(vtkAlgorithm* algorithm, LastError& error, ProgressBar* bar)
+{
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetCallback(&LastError::Callback);
+  onError->SetClientData(&error);
+  algorithm->AddObserver(vtkCommand::ErrorEvent, onError);
+  if (bar)
+  {
+    vtkNew<vtkCallbackCommand> onProgress;
+    onProgress->SetCallback(&ProgressBar::Callback);
+    onProgress->SetClientData(bar);
+    algorithm->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  }
+}
+
+bool WriteVtp(vtkPolyData* data, const std::string& path)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(data);
+  writer->SetFileName(path.c_str());
+  writer->SetDataModeToBinary();
+  return writer->Write() == 1;
+}
+
+double FieldValue(vtkPolyData* data, const char* name)
+{
+  vtkDataArray* a = data->GetFieldData()->GetArray(name);
+  return a && a->GetNumberOfTuples() > 0 ? a->GetComponent(0, 0) : 0.0;
+}
+
+std::string JsonString(const std::string& s)
+{
+  std::string out = "\"";
+  for (char c : s)
+  {
+    if (c == '"' || c == '\\')
+    {
+      out += '\\';
+      out += c;
+    }
+    else if (static_cast<unsigned char>(c) < 0x20)
+    {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+      out += buffer;
+    }
+    else
+    {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+double PeakMegabytes()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+}
+
+int main(int argc, char** argv)
+{
+  // Errors are reported below, once, in the tool's own words.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  Options o;
+  bool help = false;
+  const std::string problem = Parse(argc, argv, o, help);
+  if (help)
+  {
+    PrintHelp();
+    return Ok;
+  }
+  if (!problem.empty())
+  {
+    std::cerr << "medial-axis: " << problem << "\n";
+    return BadArguments;
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(o.OutputDir, ec);
+  if (ec || !std::filesystem::is_directory(o.OutputDir))
+  {
+    std::cerr << "medial-axis: cannot create the output folder " << o.OutputDir << "\n";
+    return BadArguments;
+  }
+  const bool showProgress = !o.Quiet && isatty(STDERR_FILENO);
+  const auto start = std::chrono::steady_clock::now();
+
+  // Read and validate: problems of the input exit with code 3.
+  vtkNew<vtkSurfaceFileReader> reader;
+  reader->SetFileName(o.Input.c_str());
+  LastError readError;
+  Observe(reader, readError, nullptr);
+  reader->Update();
+  if (!readError.Message.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    std::cerr << "medial-axis: cannot read " << o.Input << ": "
+              << (readError.Message.empty() ? "no points" : readError.Message) << "\n";
+    return BadInput;
+  }
+  vtkNew<vtkMedialSurfaceValidator> validator;
+  validator->SetInputConnection(reader->GetOutputPort());
+  LastError validationError;
+  Observe(validator, validationError, nullptr);
+  validator->Update();
+  if (!validator->GetValid())
+  {
+    std::cerr << "medial-axis: invalid surface " << o.Input << ": " << validator->GetErrorMessage()
+              << "\n";
+    return BadInput;
+  }
+
+  vtkNew<vtkStructuralMedialAxis> structural;
+  if (o.Cad)
+  {
+    structural->SetPresetToCAD();
+  }
+  if (o.Samples > 0)
+  {
+    structural->SetNumberOfSamples(o.Samples);
+  }
+  if (o.Target > 0)
+  {
+    structural->SetTargetNumberOfVertices(o.Target);
+  }
+  if (o.Sharp >= 0)
+  {
+    structural->SetPreserveSharpFeatures(o.Sharp == 1);
+  }
+  structural->SetFeatureAngle(o.FeatureAngle);
+  structural->SetRandomSeed(o.Seed);
+  structural->SetNumberOfThreads(o.Threads);
+  structural->SetInputConnection(validator->GetOutputPort());
+  ProgressBar bar{ "medial axis" };
+  LastError computeError;
+  Observe(structural, computeError, showProgress ? &bar : nullptr);
+  structural->Update();
+  vtkPolyData* mat = structural->GetOutput(0);
+  if (!computeError.Message.empty() || mat->GetNumberOfPoints() == 0)
+  {
+    std::cerr << "medial-axis: computation failed: "
+              << (computeError.Message.empty() ? "empty result" : computeError.Message) << "\n";
+    return ComputationFailed;
+  }
+
+  const std::filesystem::path dir(o.OutputDir);
+  std::vector<std::string> written;
+  vtkNew<vtkMedialAxisWriter> maWriter;
+  maWriter->SetInputData(mat);
+  const std::string maPath = (dir / "mat.ma").string();
+  maWriter->SetFileName(maPath.c_str());
+  if (maWriter->Write() != 1 || !WriteVtp(mat, (dir / "mat.vtp").string()))
+  {
+    std::cerr << "medial-axis: cannot write into " << o.OutputDir << "\n";
+    return ComputationFailed;
+  }
+  written.push_back(maPath);
+  written.push_back((dir / "mat.vtp").string());
+  if (o.Correspondence)
+  {
+    const std::string path = (dir / "correspondence.vtp").string();
+    WriteVtp(vtkPolyData::SafeDownCast(structural->GetOutputDataObject(1)), path);
+    written.push_back(path);
+  }
+  if (o.Envelope)
+  {
+    vtkNew<vtkSlabReconstructor> envelope;
+    envelope->SetInputData(mat);
+    envelope->SetNumberOfThreads(o.Threads);
+    envelope->Update();
+    const std::string path = (dir / "envelope.vtp").string();
+    WriteVtp(envelope->GetOutput(), path);
+    written.push_back(path);
+  }
+  double hausdorff = -1.0, hausdorffPercent = -1.0, toEnvelope = -1.0, toSurface = -1.0;
+  if (o.Error)
+  {
+    vtkNew<vtkMedialReconstructionError> error;
+    error->SetInputConnection(0, validator->GetOutputPort());
+    error->SetInputData(1, mat);
+    error->SetNumberOfThreads(o.Threads);
+    ProgressBar errorBar{ "error" };
+    LastError errorError;
+    Observe(error, errorError, showProgress ? &errorBar : nullptr);
+    error->Update();
+    if (!errorError.Message.empty())
+    {
+      std::cerr << "medial-axis: error measurement failed: " << errorError.Message << "\n";
+      return ComputationFailed;
+    }
+    hausdorff = error->GetHausdorff();
+    hausdorffPercent = error->GetHausdorffPercent();
+    toEnvelope = error->GetHausdorffSurfaceToEnvelope();
+    toSurface = error->GetHausdorffEnvelopeToSurface();
+    const std::string path = (dir / "distance.vtp").string();
+    WriteVtp(error->GetOutput(0), path);
+    written.push_back(path);
+  }
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  medialaxis::MedialMesh mesh;
+  medialaxis::PolyDataToMedialMesh(mat, mesh);
+  const medialaxis::MedialMeshQuality quality = medialaxis::MeasureQuality(mesh);
+  const long long euler = medialaxis::EulerCharacteristic(mesh);
+  std::cout << "medial axis of " << o.Input << ": " << mesh.Centers.size() << " spheres, "
+            << quality.Triangles << " slabs, Euler characteristic " << euler << ", " << seconds
+            << " s";
+  if (o.Error)
+  {
+    std::cout << ", two-sided Hausdorff " << hausdorffPercent << "% of the diagonal";
+  }
+  std::cout << "\n";
+  for (const std::string& path : written)
+  {
+    std::cout << "  wrote " << path << "\n";
+  }
+
+  if (!o.Report.empty())
+  {
+    std::ostringstream json;
+    json.precision(10);
+    json << "{\n  \"input\": " << JsonString(o.Input) << ",\n  \"parameters\": {"
+         << "\"samples\": " << structural->GetNumberOfSamples()
+         << ", \"target\": " << structural->GetTargetNumberOfVertices()
+         << ", \"preserve_sharp_features\": "
+         << (structural->GetPreserveSharpFeatures() ? "true" : "false")
+         << ", \"feature_angle\": " << o.FeatureAngle << ", \"seed\": " << o.Seed
+         << ", \"threads\": " << o.Threads << "},\n  \"seconds\": {";
+    const char* stages[] = { "Sampling", "RestrictedVoronoi", "VoronoiMedialAxis", "Simplification",
+      "Total" };
+    for (int k = 0; k < 5; ++k)
+    {
+      json << (k ? ", " : "") << JsonString(stages[k]) << ": "
+           << FieldValue(mat, (std::string(stages[k]) + "Seconds").c_str());
+    }
+    json << ", \"wall\": " << seconds << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
+         << ",\n  \"counts\": {\"sites\": " << FieldValue(mat, "Sites")
+         << ", \"initial_vertices\": " << FieldValue(mat, "InitialVertices")
+         << ", \"initial_triangles\": " << FieldValue(mat, "InitialTriangles")
+         << ", \"vertices\": " << mesh.Centers.size()
+         << ", \"edges\": " << medialaxis::AllEdges(mesh).size()
+         << ", \"triangles\": " << mesh.Faces.size()
+         << ", \"collapses\": " << FieldValue(mat, "Collapses") << "},\n"
+         << "  \"euler_characteristic\": " << euler << ",\n  \"triangle_quality\": {"
+         << "\"degenerate\": " << quality.DegenerateTriangles
+         << ", \"folded\": " << quality.FoldedTriangles
+         << ", \"mean_min_angle_deg\": " << quality.MeanMinimumAngle
+         << ", \"percent_min_angle_below_30\": " << quality.PercentMinimumAngleBelow30
+         << ", \"mean_q\": " << quality.MeanQuality << "}";
+    if (o.Error)
+    {
+      json << ",\n  \"hausdorff\": {\"two_sided\": " << hausdorff
+           << ", \"two_sided_percent\": " << hausdorffPercent
+           << ", \"surface_to_envelope\": " << toEnvelope
+           << ", \"envelope_to_surface\": " << toSurface << "}";
+    }
+    json << "\n}\n";
+    std::ofstream file(o.Report);
+    file << json.str();
+    if (!file)
+    {
+      std::cerr << "medial-axis: cannot write the report " << o.Report << "\n";
+      return ComputationFailed;
+    }
+    std::cout << "  wrote " << o.Report << "\n";
+  }
+  return Ok;
+}

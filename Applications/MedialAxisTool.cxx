@@ -436,17 +436,22 @@ int main(int argc, char** argv)
     WriteVtp(vtkPolyData::SafeDownCast(structural->GetOutputDataObject(1)), path);
     written.push_back(path);
   }
+  double envelopeSeconds = 0.0;
   if (o.Envelope)
   {
     vtkNew<vtkSlabReconstructor> envelope;
     envelope->SetInputData(mat);
     envelope->SetNumberOfThreads(o.Threads);
+    const auto begin = std::chrono::steady_clock::now();
     envelope->Update();
+    envelopeSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     const std::string path = (dir / "envelope.vtp").string();
     WriteVtp(envelope->GetOutput(), path);
     written.push_back(path);
   }
   double hausdorff = -1.0, hausdorffPercent = -1.0, toEnvelope = -1.0, toSurface = -1.0;
+  double errorSeconds = 0.0;
   if (o.Error)
   {
     vtkNew<vtkMedialReconstructionError> error;
@@ -456,7 +461,9 @@ int main(int argc, char** argv)
     ProgressBar errorBar{ "error" };
     LastError errorError;
     Observe(error, errorError, showProgress ? &errorBar : nullptr);
+    const auto begin = std::chrono::steady_clock::now();
     error->Update();
+    errorSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     if (!errorError.Message.empty())
     {
       std::cerr << "medial-axis: error measurement failed: " << errorError.Message << "\n";
@@ -477,6 +484,7 @@ int main(int argc, char** argv)
   medialaxis::PolyDataToMedialMesh(mat, mesh);
   const medialaxis::MedialMeshQuality quality = medialaxis::MeasureQuality(mesh);
   const long long euler = medialaxis::EulerCharacteristic(mesh);
+  const medialaxis::MedialMeshCheck check = medialaxis::ValidateMedialMesh(mesh);
   std::cout << "medial axis of " << o.Input << ": " << mesh.Centers.size() << " spheres, "
             << quality.Triangles << " slabs, Euler characteristic " << euler << ", " << seconds
             << " s";
@@ -508,7 +516,8 @@ int main(int argc, char** argv)
       json << (k ? ", " : "") << JsonString(stages[k]) << ": "
            << FieldValue(mat, (std::string(stages[k]) + "Seconds").c_str());
     }
-    json << ", \"wall\": " << seconds << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
+    json << ", \"Envelope\": " << envelopeSeconds << ", \"Error\": " << errorSeconds
+         << ", \"wall\": " << seconds << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
          << ",\n  \"counts\": {\"sites\": " << FieldValue(mat, "Sites")
          << ", \"initial_vertices\": " << FieldValue(mat, "InitialVertices")
          << ", \"initial_triangles\": " << FieldValue(mat, "InitialTriangles")
@@ -516,6 +525,8 @@ int main(int argc, char** argv)
          << ", \"edges\": " << medialaxis::AllEdges(mesh).size()
          << ", \"triangles\": " << mesh.Faces.size()
          << ", \"collapses\": " << FieldValue(mat, "Collapses") << "},\n"
+         << "  \"valid\": " << (check.IsValid() ? "true" : "false")
+         << ", \"validity_problem\": " << JsonString(check.Message) << ",\n"
          << "  \"euler_characteristic\": " << euler << ",\n  \"triangle_quality\": {"
          << "\"degenerate\": " << quality.DegenerateTriangles
          << ", \"folded\": " << quality.FoldedTriangles

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The main job on a default input: sets up what is missing, then checks and
-# prepares a generated filleted part and writes the result to output/.
+# prepares a generated filleted part (or the given surface), computes its
+# Structural MAT step by step, and runs the medial-axis tool on it for the
+# envelope, the reconstruction error and a JSON report. Everything goes to
+# output/.
 #   scripts/run-main.sh [surface file]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -9,4 +12,8 @@ build=${MEDIALAXIS_BUILD_DIR:-$root/build}
 "$root/scripts/setup.sh" --library
 out="$root/output"
 "$build/vtk/bin/PrepareSurfaceExample" --output "$out" "$@"
+# The prepared surface the example wrote (the newest *_prepared.vtp).
+prepared=$(ls -t "$out"/*_prepared.vtp | head -n 1)
+"$build/vtk/bin/medial-axis" --envelope --correspondence --error \
+  --report "$out/medial-axis/report.json" "$prepared" "$out/medial-axis"
 echo "results are in $out"

@@ -516,7 +516,8 @@ int main(int argc, char** argv)
       json << (k ? ", " : "") << JsonString(stages[k]) << ": "
            << FieldValue(mat, (std::string(stages[k]) + "Seconds").c_str());
     }
-    json << ", \"Envelope\": " << envelopeSeconds << ", \"Error\": " << errorSeconds
+    json << ", \"QueueInitialisation\": " << FieldValue(mat, "QueueInitialisationSeconds")
+         << ", \"Envelope\": " << envelopeSeconds << ", \"Error\": " << errorSeconds
          << ", \"wall\": " << seconds << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
          << ",\n  \"counts\": {\"sites\": " << FieldValue(mat, "Sites")
          << ", \"initial_vertices\": " << FieldValue(mat, "InitialVertices")

@@ -27,8 +27,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-STAGES = ["Sampling", "RestrictedVoronoi", "VoronoiMedialAxis", "Simplification",
-          "Envelope", "Error"]
+STAGES = ["Sampling", "RestrictedVoronoi", "VoronoiMedialAxis", "QueueInitialisation",
+          "Simplification", "Envelope", "Error"]
 
 
 def read_sources(mesh_dir):
@@ -123,21 +123,23 @@ def markdown(results):
     lines = ["# Benchmark results", "",
              "Run %s on %s (%d cores), `%s`." % (
                  results["date"], results["machine"], results["cores"], results["command"]), "",
-             "| mesh | preset | samples → spheres | sampling | RVD | Voronoi | simplify | total |"
+             "| mesh | preset | samples → spheres | sampling | RVD | Voronoi | queue init |"
+             " simplify (incl. queue init) | total |"
              " envelope | error eval | peak MB | V / E / F | χ (1−g) | degenerate / folded |"
              " min angle | <30° | Q | Hausdorff % | rerun identical |",
-             "|" + "---|" * 19]
+             "|" + "---|" * 20]
     for r in results["meshes"]:
         if "failed" in r:
             lines.append("| %s | %s | failed (exit %d): %s |" % (
                 r["mesh"], r["category"], r["exit_code"], r["failed"]))
             continue
         s, c, q = r["seconds"], r["counts"], r["quality"]
-        lines.append("| %s | %s | %d → %d | %s | %s | %s | %s | %s | %s | %s | %.0f | %d / %d / %d"
+        lines.append("| %s | %s | %d → %d | %s | %s | %s | %s | %s | %s | %s | %s | %.0f | %d / %d / %d"
                      " | %d (%d)%s | %d / %d | %.1f° | %.0f%% | %.2f | %s | %s |" % (
                          r["mesh"], r["category"], r["samples"], c["vertices"],
                          fmt(s["Sampling"]), fmt(s["RestrictedVoronoi"]),
-                         fmt(s["VoronoiMedialAxis"]), fmt(s["Simplification"]),
+                         fmt(s["VoronoiMedialAxis"]), fmt(s["QueueInitialisation"]),
+                         fmt(s["Simplification"]),
                          fmt(s["Total"]), fmt(s["Envelope"]), fmt(s["Error"]),
                          r["peak_memory_mb"], c["vertices"], c["edges"], c["triangles"],
                          r["euler"], r["euler_expected"],

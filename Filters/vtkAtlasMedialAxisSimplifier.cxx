@@ -226,6 +226,9 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }
 
+  medialaxis::AddFieldDouble(
+    output, "QueueInitialisationSeconds", result.QueueInitialisationSeconds);
+
   // The RVD, coloured by a medial vertex whose Atlas holds each polygon's site.
   std::vector<vtkIdType> vertexOfSite(sites.size(), -1);
   for (std::size_t v = 0; v + 1 < m.AtlasOffsets.size(); ++v)

@@ -83,6 +83,16 @@ public:
   template <typename BoundFunction, typename VisitFunction>
   void Search(BoundFunction&& bound, VisitFunction&& visit, const double& cutoff) const
   {
+    const std::uint32_t* items = this->Items.data();
+    this->SearchPositions(
+      bound, [&](std::uint32_t position) { return visit(items[position]); }, cutoff);
+  }
+
+  /// The same, but `visit` receives the item's position in GetItems() (so
+  /// that callers may keep per-item data in that order, for locality).
+  template <typename BoundFunction, typename VisitFunction>
+  void SearchPositions(BoundFunction&& bound, VisitFunction&& visit, const double& cutoff) const
+  {
     if (this->Nodes.empty())
     {
       return;
@@ -94,7 +104,8 @@ public:
     };
     Entry stack[128];
     int top = 0;
-    stack[top++] = { 0, bound(this->Nodes[0]) };
+    const Node* nodes = this->Nodes.data();
+    stack[top++] = { 0, bound(nodes[0]) };
     while (top > 0)
     {
       const Entry e = stack[--top];
@@ -102,19 +113,19 @@ public:
       {
         continue;
       }
-      const Node& n = this->Nodes[e.Node];
+      const Node& n = nodes[e.Node];
       if (n.Count > 0)
       {
         for (std::uint32_t i = n.Begin; i < n.Begin + n.Count; ++i)
         {
-          if (visit(this->Items[i]))
+          if (visit(i))
           {
             return;
           }
         }
         continue;
       }
-      const double b0 = bound(this->Nodes[n.Begin]), b1 = bound(this->Nodes[n.Begin + 1]);
+      const double b0 = bound(nodes[n.Begin]), b1 = bound(nodes[n.Begin + 1]);
       // Push the farther child first so that the nearer one is searched first.
       if (b0 <= b1)
       {

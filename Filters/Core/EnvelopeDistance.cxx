@@ -312,13 +312,14 @@ Point3 Load(const double* d)
 }
 
 // The hot loop: the signed distance of one active primitive from its compact
-// record, with the same arithmetic as SphereDistance, ConeDistance and
-// SlabInteriorDistance (so the values agree bit for bit) but no normal.
-double MedialEnvelope::ActiveValue(std::uint32_t active, const Point3& p) const
+// record (data d, kind), with the same arithmetic as SphereDistance,
+// ConeDistance and SlabInteriorDistance (so the values agree bit for bit) but
+// no normal. A free function so that the searches inline it.
+namespace
 {
-  const Compact& k = this->Records[this->Slot[active]];
-  const double* d = k.D;
-  switch (k.Kind)
+inline double CompactValue(const double* d, int kind, const Point3& p)
+{
+  switch (kind)
   {
     case 0:
       return Norm(p - Load(d)) - d[3];
@@ -358,6 +359,13 @@ double MedialEnvelope::ActiveValue(std::uint32_t active, const Point3& p) const
       return Dot(n, p) - d[12 + side];
     }
   }
+}
+}
+
+double MedialEnvelope::ActiveValue(std::uint32_t active, const Point3& p) const
+{
+  const Compact& k = this->Records[this->Slot[active]];
+  return CompactValue(k.D, k.Kind, p);
 }
 
 PrimitiveDistance MedialEnvelope::ActiveDistance(std::uint32_t active, const Point3& p) const
@@ -401,27 +409,36 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
   Nearest best;
   best.Distance = Infinity;
   std::uint32_t bestItem = std::numeric_limits<std::uint32_t>::max();
-  auto visit = [&](std::uint32_t item)
-  {
-    const double v = this->ActiveValue(item, p);
-    // Ties go to the lowest index, as in the brute-force loop.
-    if (v < best.Distance || (v == best.Distance && item < bestItem))
-    {
-      best.Distance = v;
-      bestItem = item;
-    }
-    return false;
-  };
   if (this->Accelerate)
   {
-    this->Tree.Search(
-      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()), visit, best.Distance);
+    // Records are in the tree's item order: visit by position.
+    const Compact* records = this->Records.data();
+    const std::uint32_t* items = this->Tree.GetItems().data();
+    this->Tree.SearchPositions(
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()),
+      [&](std::uint32_t position)
+      {
+        const double v = CompactValue(records[position].D, records[position].Kind, p);
+        // Ties go to the lowest index, as in the brute-force loop.
+        if (v < best.Distance || (v == best.Distance && items[position] < bestItem))
+        {
+          best.Distance = v;
+          bestItem = items[position];
+        }
+        return false;
+      },
+      best.Distance);
   }
   else
   {
     for (std::uint32_t i = 0; i < this->Active.size(); ++i)
     {
-      visit(i);
+      const double v = this->ActiveValue(i, p);
+      if (v < best.Distance || (v == best.Distance && i < bestItem))
+      {
+        best.Distance = v;
+        bestItem = i;
+      }
     }
   }
   if (bestItem != std::numeric_limits<std::uint32_t>::max())
@@ -436,20 +453,23 @@ bool MedialEnvelope::StrictlyInside(const Point3& p, double tolerance) const
 {
   const double cutoff = -tolerance;
   bool found = false;
-  auto visit = [&](std::uint32_t item)
-  {
-    found = this->ActiveValue(item, p) < cutoff;
-    return found;
-  };
   if (this->Accelerate)
   {
-    this->Tree.Search(
-      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()), visit, cutoff);
+    const Compact* records = this->Records.data();
+    this->Tree.SearchPositions(
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()),
+      [&](std::uint32_t position)
+      {
+        found = CompactValue(records[position].D, records[position].Kind, p) < cutoff;
+        return found;
+      },
+      cutoff);
   }
   else
   {
-    for (std::uint32_t i = 0; i < this->Active.size() && !visit(i); ++i)
+    for (std::uint32_t i = 0; i < this->Active.size() && !found; ++i)
     {
+      found = this->ActiveValue(i, p) < cutoff;
     }
   }
   return found;
@@ -463,7 +483,8 @@ bool MedialEnvelope::StrictlyInside(
     for (std::uint32_t k = this->IncidentOffsets[vertices[i]];
          k < this->IncidentOffsets[vertices[i] + 1]; ++k)
     {
-      if (this->ActiveValue(this->Incident[k], p) < -tolerance)
+      const Compact& record = this->Records[this->Slot[this->Incident[k]]];
+      if (CompactValue(record.D, record.Kind, p) < -tolerance)
       {
         return true;
       }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ReconstructionError.h"
 
+#include "KdTree.h"
 #include "Random.h"
 #include "TriangleLocator.h"
 #include "Vec3.h"
@@ -568,29 +569,6 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
     result.Aborted = true;
     return result;
   }
-  result.VertexDistance.resize(nv);
-  result.VertexLowerBound.resize(nv);
-  result.VertexSignedDistance.resize(nv);
-  std::vector<double> upper(nv + ns);
-  for (std::size_t i = 0; i < nv + ns; ++i)
-  {
-    const auto& d = distances[i];
-    upper[i] = d.Upper;
-    if (i < nv)
-    {
-      result.VertexDistance[i] = d.Upper;
-      result.VertexLowerBound[i] = d.Lower;
-      result.VertexSignedDistance[i] = d.Signed;
-    }
-    result.SurfaceToEnvelope.HausdorffLowerBound =
-      std::max(result.SurfaceToEnvelope.HausdorffLowerBound, d.Lower);
-    result.InsidePoints += d.Inside ? 1 : 0;
-    result.UncertifiedPoints += d.Exact ? 0 : 1;
-    result.LargestBoundGap = std::max(result.LargestBoundGap, d.Upper - d.Lower);
-  }
-  // Mean and RMS over the area-uniform samples (over the vertices if none).
-  Summarise(upper, ns > 0 ? nv : 0, result.SurfaceToEnvelope);
-
   // Envelope -> surface: candidates on the primitive surfaces (where they
   // can be exposed, see EnvelopePieces), area-uniform, kept when on the
   // boundary of the union; drawn in batches until enough are kept.
@@ -657,6 +635,51 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   }
   Summarise(result.EnvelopeSampleDistance, 0, result.EnvelopeToSurface);
   result.EnvelopeToSurface.HausdorffLowerBound = result.EnvelopeToSurface.Hausdorff;
+
+  // Inside points whose distance to the union's boundary is not certified
+  // exact carry an upper bound from projections and ray traces, which can be
+  // far off where many primitives meet. Every envelope sample is a point of
+  // that boundary, so the nearest one bounds the distance from above too.
+  if (!result.EnvelopeSamples.empty())
+  {
+    const KdTree boundary(result.EnvelopeSamples);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv + ns, 1024),
+      [&](const tbb::blocked_range<std::size_t>& r)
+      {
+        for (std::size_t i = r.begin(); i < r.end(); ++i)
+        {
+          auto& d = distances[i];
+          if (d.Inside && !d.Exact)
+          {
+            const Point3& p = i < nv ? surface.Points[i] : samples[i - nv];
+            const double nearest = Norm(p - result.EnvelopeSamples[boundary.Nearest(p)]);
+            d.Upper = std::max(d.Lower, std::min(d.Upper, nearest));
+          }
+        }
+      });
+  }
+  result.VertexDistance.resize(nv);
+  result.VertexLowerBound.resize(nv);
+  result.VertexSignedDistance.resize(nv);
+  std::vector<double> upper(nv + ns);
+  for (std::size_t i = 0; i < nv + ns; ++i)
+  {
+    const auto& d = distances[i];
+    upper[i] = d.Upper;
+    if (i < nv)
+    {
+      result.VertexDistance[i] = d.Upper;
+      result.VertexLowerBound[i] = d.Lower;
+      result.VertexSignedDistance[i] = d.Signed;
+    }
+    result.SurfaceToEnvelope.HausdorffLowerBound =
+      std::max(result.SurfaceToEnvelope.HausdorffLowerBound, d.Lower);
+    result.InsidePoints += d.Inside ? 1 : 0;
+    result.UncertifiedPoints += d.Exact ? 0 : 1;
+    result.LargestBoundGap = std::max(result.LargestBoundGap, d.Upper - d.Lower);
+  }
+  // Mean and RMS over the area-uniform samples (over the vertices if none).
+  Summarise(upper, ns > 0 ? nv : 0, result.SurfaceToEnvelope);
 
   result.Hausdorff =
     std::max(result.SurfaceToEnvelope.Hausdorff, result.EnvelopeToSurface.Hausdorff);

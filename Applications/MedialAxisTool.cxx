@@ -3,6 +3,7 @@
 // command line. See PrintHelp() for the options and exit codes.
 #include "MedialMesh.h"
 #include "MedialMeshQuality.h"
+#include "vtkErrorEventText.h"
 #include "vtkMedialAxisWriter.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkMedialReconstructionError.h"
@@ -259,14 +260,7 @@ struct LastError
   std::string Message;
   static void Callback(vtkObject*, unsigned long, void* clientData, void* callData)
   {
-    std::string text = callData ? static_cast<const char*>(callData) : "";
-    const std::size_t start = text.find("): ");
-    text = start == std::string::npos ? text : text.substr(start + 3);
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
-      text.pop_back();
-    }
-    static_cast<LastError*>(clientData)->Message = text;
+    static_cast<LastError*>(clientData)->Message = medialaxis::ErrorEventMessage(callData);
   }
 };
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkStructuralMedialAxis.h"
 
+#include "vtkErrorEventText.h"
 #include "vtkMedialMeshConversion.h"
 
 #include "vtkAtlasMedialAxisSimplifier.h"
@@ -75,16 +76,7 @@ struct StageObserver
   static void OnError(vtkObject*, unsigned long, void* clientData, void* callData)
   {
     auto* self = static_cast<StageObserver*>(clientData);
-    // VTK's text is "ERROR: In <file>, line <n>\n<class> (<address>): <message>":
-    // keep the message.
-    std::string text = callData ? static_cast<const char*>(callData) : "unknown error";
-    const std::size_t start = text.find("): ");
-    text = start == std::string::npos ? text : text.substr(start + 3);
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
-      text.pop_back();
-    }
-    self->Error = text;
+    self->Error = medialaxis::ErrorEventMessage(callData);
   }
 };
 }

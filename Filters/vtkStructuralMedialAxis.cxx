@@ -17,6 +17,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkRestrictedVoronoiDiagram.h"
+#include "vtkSlabReconstructor.h"
 #include "vtkVoronoiMedialAxis.h"
 
 #include <chrono>
@@ -28,7 +29,7 @@ vtkStandardNewMacro(vtkStructuralMedialAxis);
 
 vtkStructuralMedialAxis::vtkStructuralMedialAxis()
 {
-  this->SetNumberOfOutputPorts(3);
+  this->SetNumberOfOutputPorts(4);
   this->SetPresetToOrganic();
 }
 
@@ -88,9 +89,11 @@ int vtkStructuralMedialAxis::RequestData(
   vtkPolyData* mat = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* correspondence = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData* sitesOut = vtkPolyData::GetData(outputVector, 2);
+  vtkPolyData* envelopeOut = vtkPolyData::GetData(outputVector, 3);
   mat->Initialize();
   correspondence->Initialize();
   sitesOut->Initialize();
+  envelopeOut->Initialize();
   if (!input || input->GetNumberOfPolys() == 0)
   {
     vtkErrorMacro(<< "the input has no polygons: give a closed triangle surface");
@@ -191,6 +194,22 @@ int vtkStructuralMedialAxis::RequestData(
   medialaxis::AddFieldValue(mat, "Sites", sampler->GetOutput()->GetNumberOfPoints());
   medialaxis::AddFieldValue(mat, "InitialVertices", initial->GetNumberOfPoints());
   medialaxis::AddFieldValue(mat, "InitialTriangles", initial->GetNumberOfPolys());
+
+  if (this->GenerateEnvelope)
+  {
+    // The union of the medial primitives, for display (fast, overlapping).
+    vtkNew<vtkPolyData> medial;
+    medial->ShallowCopy(mat);
+    vtkNew<vtkSlabReconstructor> envelope;
+    envelope->SetInputData(medial);
+    envelope->SetModeToPrimitives();
+    envelope->SetNumberOfThreads(this->NumberOfThreads);
+    const auto begin = std::chrono::steady_clock::now();
+    envelope->Update();
+    medialaxis::AddFieldDouble(mat, "EnvelopeSeconds",
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
+    envelopeOut->ShallowCopy(envelope->GetOutput());
+  }
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -207,4 +226,5 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Lambda: " << this->Lambda << "\n";
   os << indent << "SpikeThreshold: " << this->SpikeThreshold << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "GenerateEnvelope: " << this->GenerateEnvelope << "\n";
 }

@@ -16,7 +16,10 @@
  * `TotalSeconds`, and the counts `Sites`, `InitialVertices`,
  * `InitialTriangles` and the simplifier's own. Output port 1: the restricted
  * Voronoi diagram with `MedialVertexId` (the surface coloured by
- * correspondence). Output port 2: the surface sites.
+ * correspondence). Output port 2: the surface sites. Output port 3 (with
+ * GenerateEnvelope, the default): the envelope of the medial mesh as
+ * vtkSlabReconstructor's overlapping primitive surfaces (field data
+ * `EnvelopeSeconds` on port 0).
  *
  * Progress moves through the stages in proportion to their usual cost; an
  * abort stops the running stage and leaves the outputs empty. Errors of a
@@ -104,6 +107,14 @@ public:
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 
+  ///@{
+  /// Also output the envelope (balls, cones, slabs) on port 3 (default on;
+  /// it costs a few percent of the run).
+  vtkSetMacro(GenerateEnvelope, bool);
+  vtkGetMacro(GenerateEnvelope, bool);
+  vtkBooleanMacro(GenerateEnvelope, bool);
+  ///@}
+
 protected:
   vtkStructuralMedialAxis();
   ~vtkStructuralMedialAxis() override = default;
@@ -120,6 +131,7 @@ protected:
   double Lambda = 6e-6;
   double SpikeThreshold = 0.025;
   int NumberOfThreads = 0;
+  bool GenerateEnvelope = true;
 
 private:
   vtkStructuralMedialAxis(const vtkStructuralMedialAxis&) = delete;

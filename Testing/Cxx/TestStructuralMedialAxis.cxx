@@ -53,6 +53,7 @@ TEST(StructuralMedialAxis, PresetsFollowThePaper)
   EXPECT_EQ(filter->GetNumberOfSamples(), 10000);
   EXPECT_EQ(filter->GetTargetNumberOfVertices(), 1000);
   EXPECT_FALSE(filter->GetPreserveSharpFeatures());
+  EXPECT_TRUE(filter->GetGenerateEnvelope());
   filter->SetPresetToCAD();
   EXPECT_EQ(filter->GetNumberOfSamples(), 50000);
   EXPECT_EQ(filter->GetTargetNumberOfVertices(), 5000);
@@ -120,6 +121,12 @@ TEST(StructuralMedialAxis, SameResultAsTheChainWithTimesCountsAndProgress)
   vtkPolyData* cells = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));
   EXPECT_NE(cells->GetCellData()->GetArray("MedialVertexId"), nullptr);
   EXPECT_EQ(vtkPolyData::SafeDownCast(filter->GetOutputDataObject(2))->GetNumberOfPoints(), 4000);
+
+  // The envelope: balls, cones and slabs of the medial mesh.
+  vtkPolyData* envelope = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(3));
+  EXPECT_GT(envelope->GetNumberOfPolys(), 0);
+  EXPECT_NE(envelope->GetCellData()->GetArray("PrimitiveKind"), nullptr);
+  EXPECT_GT(FieldValue(mat, "EnvelopeSeconds"), 0.0);
 
   // Progress never goes back and ends at 1, through every stage's share.
   ASSERT_GT(log.Values.size(), 10u);

@@ -111,6 +111,8 @@ if os.path.exists(fandisk):
     check(result.GetFieldData().GetArray("Sites").GetValue(0) == 5000, "wrong number of sites")
     corr = servermanager.Fetch(structural, idx=1)
     check(corr.GetCellData().GetArray("MedialVertexId") is not None, "no correspondence output")
+    shell = servermanager.Fetch(structural, idx=3)
+    check(shell.GetCellData().GetArray("PrimitiveKind") is not None, "no envelope output")
 else:
     print("skipped the one-click filter: %s not found" % fandisk)
 # The envelope of a medial mesh, overlapping primitives and closed boundary.

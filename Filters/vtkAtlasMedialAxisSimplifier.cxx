@@ -166,6 +166,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.StrictTopologyGuard = this->StrictTopologyGuard;
   options.PreserveSharpFeatures = this->PreserveSharpFeatures;
   options.InvaginatedTerm = this->InvaginatedTerm;
+  options.PreventFolds = this->PreventFolds;
   options.Progress = [this](double f)
   {
     this->UpdateProgress(0.05 + 0.9 * f);
@@ -272,4 +273,5 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StrictTopologyGuard: " << this->StrictTopologyGuard << "\n";
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
   os << indent << "InvaginatedTerm: " << this->InvaginatedTerm << "\n";
+  os << indent << "PreventFolds: " << this->PreventFolds << "\n";
 }

@@ -110,6 +110,16 @@ public:
   vtkBooleanMacro(InvaginatedTerm, bool);
   ///@}
 
+  ///@{
+  /// Refuse collapses that would fold two triangles onto each other
+  /// (dihedral angle below 10 degrees), until no other collapse is left
+  /// (default on; off reproduces the paper, which only tests each
+  /// triangle's own flip).
+  vtkSetMacro(PreventFolds, bool);
+  vtkGetMacro(PreventFolds, bool);
+  vtkBooleanMacro(PreventFolds, bool);
+  ///@}
+
 protected:
   vtkAtlasMedialAxisSimplifier();
   ~vtkAtlasMedialAxisSimplifier() override = default;
@@ -126,6 +136,7 @@ protected:
   bool StrictTopologyGuard = false;
   bool PreserveSharpFeatures = true;
   bool InvaginatedTerm = true;
+  bool PreventFolds = true;
 
 private:
   vtkAtlasMedialAxisSimplifier(const vtkAtlasMedialAxisSimplifier&) = delete;

@@ -136,6 +136,7 @@ public:
             c.VersionB == this->Version[c.B];
         })
   {
+    this->FoldGuard = options.PreventFolds;
     this->Setup(input, rvd, sites);
   }
 
@@ -224,8 +225,9 @@ private:
   std::vector<std::array<Index, 2>> RingPairs, Spokes;
   std::size_t Rejected = 0, Collapses = 0, Snapped = 0, RelaxedCollapses = 0, Merged = 0;
   std::chrono::steady_clock::time_point RunStart;
-  bool Relaxed = false;  // the link condition no longer guards collapses
-  bool FoldGuard = true; // collapses may not fold triangles onto each other
+  bool Relaxed = false;            // the link condition no longer guards collapses
+  bool FoldGuard = true;           // collapses may not fold triangles onto each other
+  bool FoldsAllowedAtLast = false; // the fold guard was lifted after a stall
   std::size_t FoldingAllowedCollapses = 0, ForcedSnaps = 0;
 };
 
@@ -1165,7 +1167,7 @@ bool Simplifier::CollapseUntil(std::size_t target, const std::function<bool(std:
     }
     ++this->Collapses;
     this->RelaxedCollapses += this->Relaxed ? 1 : 0;
-    this->FoldingAllowedCollapses += this->FoldGuard ? 0 : 1;
+    this->FoldingAllowedCollapses += this->FoldsAllowedAtLast ? 1 : 0;
     this->SnapPending(c.A);
     for (Index u : this->Neighbours[c.A])
     {
@@ -1241,9 +1243,10 @@ AtlasSimplifierResult Simplifier::Run()
   // other: where a tube's thin sheets must shrink to a curve, the last
   // strips of sliver triangles cannot collapse otherwise. Go on without the
   // fold guard and count those collapses.
-  if (this->AliveCount > target)
+  if (this->AliveCount > target && this->FoldGuard)
   {
     this->FoldGuard = false;
+    this->FoldsAllowedAtLast = true;
     this->PushAllEdges();
     if (!this->CollapseUntil(target, progress))
     {

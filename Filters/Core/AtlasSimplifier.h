@@ -43,6 +43,9 @@ struct AtlasSimplifierOptions
   /// Distance-to-site fidelity for cells on concave edges (Eq. 11, solved by
   /// L-BFGS); when off they use the plane quadric like every other cell.
   bool InvaginatedTerm = true;
+  /// Refuse collapses that fold two triangles onto each other (dihedral
+  /// angle below 10 degrees); allowed anyway once nothing else is left.
+  bool PreventFolds = true;
   /// Fraction in [0, 1]; returning false aborts (the result is then empty).
   std::function<bool(double)> Progress;
 };

@@ -4,6 +4,7 @@
 #include "AnalyticShapes.h"
 #include "AtlasSimplifier.h"
 #include "BlueNoiseSampler.h"
+#include "MedialMeshQuality.h"
 #include "Parallel.h"
 #include "RestrictedVoronoi.h"
 #include "Vec3.h"
@@ -14,6 +15,7 @@
 #include "vtkExtractMedialAtlas.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkRestrictedVoronoiDiagram.h"
+#include "vtkSurfaceFileReader.h"
 #include "vtkVoronoiMedialAxis.h"
 
 #include "TestHelpers.h"
@@ -30,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <set>
 
 using namespace medialaxis;
@@ -459,4 +462,37 @@ TEST(ExtractMedialAtlasFilter, ShowsExactlyTheCellsOfOneVertex)
   extractor->Update();
   EXPECT_EQ(extractor->GetOutput()->GetNumberOfCells(), 0);
   EXPECT_NE(errors->Last.find("from 0 to 29"), std::string::npos) << errors->Last;
+}
+
+// Ablation: without the fold test, collapses fold triangles onto each other
+// (spike removals turn needle triangles freely); with it, none remain.
+TEST(AtlasMedialAxisSimplifierFilter, PreventFoldsAblation)
+{
+  const std::string path = std::string(MEDIALAXIS_MESH_DIR) + "/bunny.obj";
+  if (!std::ifstream(path).good())
+  {
+    GTEST_SKIP() << "shared meshes not present at " << MEDIALAXIS_MESH_DIR;
+  }
+  vtkNew<vtkSurfaceFileReader> reader;
+  reader->SetFileName(path.c_str());
+  test::InitialMedialPipeline pipeline(reader->GetOutputPort(), 5000);
+  std::size_t folded[2] = { 0, 0 };
+  for (bool prevent : { false, true })
+  {
+    vtkNew<vtkAtlasMedialAxisSimplifier> simplifier;
+    simplifier->SetInputConnection(0, pipeline.Voronoi->GetOutputPort());
+    simplifier->SetInputConnection(1, pipeline.Rvd->GetOutputPort(0));
+    simplifier->SetTargetNumberOfVertices(500);
+    simplifier->PreserveSharpFeaturesOff();
+    simplifier->SetPreventFolds(prevent);
+    simplifier->Update();
+    MedialMesh m;
+    ASSERT_EQ(PolyDataToMedialMesh(simplifier->GetOutput(), m), "");
+    EXPECT_EQ(m.Centers.size(), 500u);
+    folded[prevent] = MeasureQuality(m).FoldedTriangles;
+  }
+  std::cout << "bunny 5,000 sites -> 500 spheres: " << folded[0] << " folded triangles without "
+            << "the fold test, " << folded[1] << " with it\n";
+  EXPECT_GT(folded[0], 0u);
+  EXPECT_EQ(folded[1], 0u);
 }

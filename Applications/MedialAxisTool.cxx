@@ -361,8 +361,9 @@ int main(int argc, char** argv)
   reader->Update();
   if (!readError.Message.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
   {
-    std::cerr << "medial-axis: cannot read " << o.Input << ": "
-              << (readError.Message.empty() ? "no points" : readError.Message) << "\n";
+    // The reader's message names the file and, for malformed files, the line.
+    std::cerr << "medial-axis: cannot read "
+              << (readError.Message.empty() ? o.Input + ": no points" : readError.Message) << "\n";
     return BadInput;
   }
   vtkNew<vtkMedialSurfaceValidator> validator;

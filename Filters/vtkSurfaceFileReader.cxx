@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkSurfaceFileReader.h"
 
+#include "vtkErrorEventText.h"
+
 #include "vtkOFFReader.h"
 
 #include "vtkCommand.h"
@@ -37,7 +39,7 @@ public:
   {
     if (data && this->Text.empty())
     {
-      this->Text = static_cast<const char*>(data);
+      this->Text = medialaxis::ErrorEventMessage(data);
     }
   }
   std::string Text;

@@ -197,11 +197,7 @@ vtkSmartPointer<vtkPolyData> MedialPolyData(const MedialMesh& mesh)
   return pd;
 }
 
-double FieldValue(vtkPolyData* pd, const char* name)
-{
-  vtkDataArray* a = pd->GetFieldData()->GetArray(name);
-  return a ? a->GetComponent(0, 0) : std::nan("");
-}
+using test::FieldValue;
 }
 
 // ---------------------------------------------------------------------------

@@ -9,6 +9,8 @@
 #include "vtkBlueNoiseSurfaceSampler.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -16,6 +18,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkVoronoiMedialAxis.h"
 
+#include <cmath>
 #include <fstream>
 #include <string>
 
@@ -117,6 +120,13 @@ struct InitialMedialPipeline
     this->Voronoi->SetInputConnection(1, this->Rvd->GetOutputPort(1));
   }
 };
+
+/// The first value of a field-data array, NaN when it is missing.
+inline double FieldValue(vtkPolyData* data, const char* name)
+{
+  vtkDataArray* a = data->GetFieldData()->GetArray(name);
+  return a ? a->GetComponent(0, 0) : std::nan("");
+}
 
 /// Writes `text` to a fresh file in the working directory and returns its path.
 inline std::string WriteTextFile(const std::string& name, const std::string& text)

@@ -25,11 +25,7 @@ using namespace medialaxis;
 
 namespace
 {
-double FieldValue(vtkPolyData* data, const char* name)
-{
-  vtkDataArray* a = data->GetFieldData()->GetArray(name);
-  return a ? a->GetComponent(0, 0) : -1.0;
-}
+using test::FieldValue;
 
 struct ProgressLog
 {

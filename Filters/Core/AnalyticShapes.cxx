@@ -387,6 +387,268 @@ TriangleMesh MakeLBlock(const Point3& sides, int resolution)
   return mesh;
 }
 
+namespace
+{
+// Rings of a star-shaped planar cap at height z, from its outline (ring 0,
+// whose point ids are given) inward to the centre `centre`: quads between
+// rings, a fan at the centre. `up` orients the cap's normal to +z.
+void AddCap(TriangleMesh& mesh, const std::vector<Index>& outline, const Point3& centre, int rings,
+  bool up, std::vector<int>* labels)
+{
+  const std::size_t n = outline.size();
+  std::vector<Index> previous = outline;
+  const std::size_t before = mesh.Triangles.size();
+  for (int ring = 1; ring < rings; ++ring)
+  {
+    const double scale = double(rings - ring) / rings;
+    std::vector<Index> current(n);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const Point3& p = mesh.Points[outline[k]];
+      current[k] = static_cast<Index>(mesh.Points.size());
+      mesh.Points.push_back(
+        { centre[0] + scale * (p[0] - centre[0]), centre[1] + scale * (p[1] - centre[1]), p[2] });
+    }
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const std::size_t k1 = (k + 1) % n;
+      if (up)
+      {
+        AddQuad(mesh, previous[k], previous[k1], current[k1], current[k]);
+      }
+      else
+      {
+        AddQuad(mesh, previous[k], current[k], current[k1], previous[k1]);
+      }
+    }
+    previous.swap(current);
+  }
+  const Index middle = static_cast<Index>(mesh.Points.size());
+  mesh.Points.push_back(centre);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const std::size_t k1 = (k + 1) % n;
+    if (up)
+    {
+      mesh.Triangles.push_back({ previous[k], previous[k1], middle });
+    }
+    else
+    {
+      mesh.Triangles.push_back({ previous[k], middle, previous[k1] });
+    }
+  }
+  labels->resize(labels->size() + (mesh.Triangles.size() - before), -1);
+}
+
+void RequireFilletRadius(double r)
+{
+  if (!(r >= 0.0) || !std::isfinite(r))
+  {
+    throw std::invalid_argument("fillet radii must be non-negative and finite");
+  }
+}
+}
+
+LabelledTriangleMesh MakeFilletedPrism(const Point3& sides,
+  const std::array<double, 4>& bottomRadii, const std::array<double, 4>& topRadii, int resolution)
+{
+  for (double s : sides)
+  {
+    RequirePositive(s, "prism side");
+  }
+  const double halfX = 0.5 * sides[0], halfY = 0.5 * sides[1], height = sides[2];
+  for (int k = 0; k < 4; ++k)
+  {
+    RequireFilletRadius(bottomRadii[k]);
+    RequireFilletRadius(topRadii[k]);
+    if ((bottomRadii[k] > 0.0) != (topRadii[k] > 0.0))
+    {
+      throw std::invalid_argument("a prism edge must be rounded at both ends or at neither");
+    }
+    // Neighbouring arcs must not overlap along the side between them.
+    const int next = (k + 1) % 4;
+    const double side = (k % 2 == 0) ? sides[0] : sides[1];
+    if (std::max(bottomRadii[k] + bottomRadii[next], topRadii[k] + topRadii[next]) > side)
+    {
+      throw std::invalid_argument("the fillets of two neighbouring prism edges overlap");
+    }
+  }
+  resolution = std::max(resolution, 2);
+  const double spacing = std::max({ sides[0], sides[1], height }) / (2.0 * resolution);
+  const int layers = std::max(1, static_cast<int>(std::lround(height / spacing)));
+  // Corners counter-clockwise seen from +z; the arc of corner k turns from
+  // angle k pi/2 to (k + 1) pi/2 around its centre.
+  const double cornerX[4] = { halfX, -halfX, -halfX, halfX };
+  const double cornerY[4] = { halfY, halfY, -halfY, -halfY };
+  int sideSegments[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    const double side = (k % 2 == 0) ? sides[0] : sides[1];
+    sideSegments[k] = std::max(1, static_cast<int>(std::lround(side / spacing)));
+  }
+
+  LabelledTriangleMesh part;
+  TriangleMesh& mesh = part.Mesh;
+  std::vector<int> segmentLabel; // of profile segment i (from point i to i + 1)
+  std::vector<std::vector<Index>> rows(layers + 1);
+  for (int layer = 0; layer <= layers; ++layer)
+  {
+    const double t = double(layer) / layers;
+    const double z = -0.5 * height + height * t;
+    std::vector<Point3> profile;
+    segmentLabel.clear();
+    for (int k = 0; k < 4; ++k)
+    {
+      const double r = (1.0 - t) * bottomRadii[k] + t * topRadii[k];
+      const double sx = cornerX[k] > 0 ? 1.0 : -1.0, sy = cornerY[k] > 0 ? 1.0 : -1.0;
+      if (r > 0.0)
+      {
+        const double cx = cornerX[k] - sx * r, cy = cornerY[k] - sy * r;
+        for (int i = 0; i <= resolution; ++i)
+        {
+          const double angle = 0.5 * Pi * (k + double(i) / resolution);
+          profile.push_back({ cx + r * std::cos(angle), cy + r * std::sin(angle), z });
+          segmentLabel.push_back(i < resolution ? k : -1);
+        }
+      }
+      else
+      {
+        profile.push_back({ cornerX[k], cornerY[k], z });
+        segmentLabel.push_back(-1);
+      }
+      // The straight side to the next corner's arc: interior points only.
+      const int next = (k + 1) % 4;
+      const double rn = (1.0 - t) * bottomRadii[next] + t * topRadii[next];
+      const Point3 from = profile.back();
+      const double nx = cornerX[next] > 0 ? 1.0 : -1.0, ny = cornerY[next] > 0 ? 1.0 : -1.0;
+      // Start of the next arc (angle (k + 1) pi/2 around its centre).
+      const double angle = 0.5 * Pi * (k + 1);
+      const Point3 to{ cornerX[next] - nx * rn + rn * std::cos(angle),
+        cornerY[next] - ny * rn + rn * std::sin(angle), z };
+      for (int i = 1; i < sideSegments[k]; ++i)
+      {
+        const double u = double(i) / sideSegments[k];
+        profile.push_back({ from[0] + u * (to[0] - from[0]), from[1] + u * (to[1] - from[1]), z });
+        segmentLabel.push_back(-1);
+      }
+    }
+    for (const Point3& p : profile)
+    {
+      rows[layer].push_back(static_cast<Index>(mesh.Points.size()));
+      mesh.Points.push_back(p);
+    }
+  }
+  const std::size_t n = rows[0].size();
+  for (int layer = 0; layer < layers; ++layer)
+  {
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t j = (i + 1) % n;
+      AddQuad(mesh, rows[layer][i], rows[layer][j], rows[layer + 1][j], rows[layer + 1][i]);
+      part.FilletId.resize(mesh.Triangles.size(), segmentLabel[i]);
+    }
+  }
+  const int rings = std::max(1, static_cast<int>(std::lround(std::min(halfX, halfY) / spacing)));
+  AddCap(mesh, rows[layers], { 0.0, 0.0, 0.5 * height }, rings, true, &part.FilletId);
+  AddCap(mesh, rows[0], { 0.0, 0.0, -0.5 * height }, rings, false, &part.FilletId);
+  return part;
+}
+
+LabelledTriangleMesh MakeRoundedCylinder(
+  double radius, double height, double topFilletRadius, double bottomFilletRadius, int resolution)
+{
+  RequirePositive(radius, "cylinder radius");
+  RequirePositive(height, "cylinder height");
+  RequireFilletRadius(topFilletRadius);
+  RequireFilletRadius(bottomFilletRadius);
+  if (std::max(topFilletRadius, bottomFilletRadius) > radius ||
+    topFilletRadius + bottomFilletRadius > height)
+  {
+    throw std::invalid_argument("the rim fillets do not fit the cylinder");
+  }
+  resolution = std::max(resolution, 2);
+  const int around = 16 * resolution;
+  const double spacing = 2.0 * Pi * radius / around;
+  // The profile in (distance from the axis, z), from the top pole to the
+  // bottom pole (both excluded), with the label of the segment before each point.
+  std::vector<std::array<double, 2>> profile;
+  std::vector<int> labelBefore;
+  auto straight = [&](double r0, double z0, double r1, double z1, bool includeEnd)
+  {
+    const double length = std::hypot(r1 - r0, z1 - z0);
+    const int segments = std::max(1, static_cast<int>(std::lround(length / spacing)));
+    for (int i = 1; i <= segments; ++i)
+    {
+      if (i == segments && !includeEnd)
+      {
+        break;
+      }
+      const double u = double(i) / segments;
+      profile.push_back({ r0 + u * (r1 - r0), z0 + u * (z1 - z0) });
+      labelBefore.push_back(-1);
+    }
+  };
+  auto arc = [&](double cr, double cz, double rho, double from, double to, int label)
+  {
+    for (int i = 1; i <= resolution; ++i)
+    {
+      const double angle = from + (to - from) * i / resolution;
+      profile.push_back({ cr + rho * std::cos(angle), cz + rho * std::sin(angle) });
+      labelBefore.push_back(label);
+    }
+  };
+  const double top = 0.5 * height, bottom = -0.5 * height;
+  const double rt = topFilletRadius, rb = bottomFilletRadius;
+  straight(0.0, top, radius - rt, top, true);
+  if (rt > 0.0)
+  {
+    arc(radius - rt, top - rt, rt, 0.5 * Pi, 0.0, 0);
+  }
+  straight(radius, top - rt, radius, bottom + rb, true);
+  if (rb > 0.0)
+  {
+    arc(radius - rb, bottom + rb, rb, 0.0, -0.5 * Pi, 1);
+  }
+  straight(radius - rb, bottom, 0.0, bottom, false);
+
+  LabelledTriangleMesh part;
+  TriangleMesh& mesh = part.Mesh;
+  auto ring = [around](std::size_t i, int k)
+  { return static_cast<Index>(i * around + k % around); };
+  for (const auto& p : profile)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      const double angle = 2.0 * Pi * k / around;
+      mesh.Points.push_back({ p[0] * std::cos(angle), p[0] * std::sin(angle), p[1] });
+    }
+  }
+  const Index topPole = static_cast<Index>(mesh.Points.size());
+  mesh.Points.push_back({ 0.0, 0.0, top });
+  const Index bottomPole = topPole + 1;
+  mesh.Points.push_back({ 0.0, 0.0, bottom });
+  for (int k = 0; k < around; ++k)
+  {
+    mesh.Triangles.push_back({ topPole, ring(0, k), ring(0, k + 1) });
+    part.FilletId.push_back(-1);
+  }
+  for (std::size_t i = 0; i + 1 < profile.size(); ++i)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      AddQuad(mesh, ring(i, k), ring(i + 1, k), ring(i + 1, k + 1), ring(i, k + 1));
+      part.FilletId.resize(mesh.Triangles.size(), labelBefore[i + 1]);
+    }
+  }
+  const std::size_t last = profile.size() - 1;
+  for (int k = 0; k < around; ++k)
+  {
+    mesh.Triangles.push_back({ bottomPole, ring(last, k + 1), ring(last, k) });
+    part.FilletId.push_back(-1);
+  }
+  return part;
+}
+
 AreaVolume LBlockAreaVolume(const Point3& sides)
 {
   const double x = sides[0], y = sides[1], z = sides[2];

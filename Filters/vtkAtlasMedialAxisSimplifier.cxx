@@ -167,6 +167,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.PreserveSharpFeatures = this->PreserveSharpFeatures;
   options.InvaginatedTerm = this->InvaginatedTerm;
   options.PreventFolds = this->PreventFolds;
+  options.FringeCollapses = this->FringeCollapses;
   options.Progress = [this](double f)
   {
     this->UpdateProgress(0.05 + 0.9 * f);
@@ -274,4 +275,5 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
   os << indent << "InvaginatedTerm: " << this->InvaginatedTerm << "\n";
   os << indent << "PreventFolds: " << this->PreventFolds << "\n";
+  os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
 }

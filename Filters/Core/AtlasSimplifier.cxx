@@ -601,7 +601,13 @@ void Simplifier::Push(Index a, Index b)
 
 bool Simplifier::LinkConditionHolds(Index a, Index b) const
 {
-  // Common neighbours of a and b must be exactly the apices of faces (a, b, x).
+  // Dey's vertex condition: the common neighbours of a and b must be exactly
+  // the apices of faces (a, b, x). With FringeCollapses, where it fails the
+  // collapse is still taken when it keeps the Euler characteristic: every
+  // extra common neighbour x closes the loop (a, b, x), raising the
+  // characteristic by one, and every face pair (a, x, y), (b, x, y) that
+  // merges lowers it by one (e.g. the fins of a fringe along a fillet's
+  // centre line, where (a, x, y), (b, x, y) and (a, b, x) form a disk).
   Index apices[16];
   std::size_t apexCount = 0;
   for (Index f : this->VertexFaces[a])
@@ -623,6 +629,7 @@ bool Simplifier::LinkConditionHolds(Index a, Index b) const
   }
   const auto& na = this->Neighbours[a];
   const auto& nb = this->Neighbours[b];
+  std::size_t extra = 0;
   std::size_t i = 0, j = 0;
   while (i < na.size() && j < nb.size())
   {
@@ -636,15 +643,42 @@ bool Simplifier::LinkConditionHolds(Index a, Index b) const
     }
     else
     {
-      if (std::find(apices, apices + apexCount, na[i]) == apices + apexCount)
-      {
-        return false;
-      }
+      extra += std::find(apices, apices + apexCount, na[i]) == apices + apexCount ? 1 : 0;
       ++i;
       ++j;
     }
   }
-  return true;
+  if (extra == 0)
+  {
+    return true;
+  }
+  if (!this->Options.FringeCollapses ||
+    this->AliveCount <= this->Options.StrictLinkConditionVertexCount)
+  {
+    return false;
+  }
+  std::size_t merges = 0;
+  for (Index f : this->VertexFaces[b])
+  {
+    const auto& t = this->Faces[f];
+    if (!this->FaceAlive[f] || t[0] == a || t[1] == a || t[2] == a)
+    {
+      continue;
+    }
+    const int k = t[0] == b ? 0 : (t[1] == b ? 1 : 2);
+    const Index x = t[(k + 1) % 3], y = t[(k + 2) % 3];
+    for (Index g : this->VertexFaces[a])
+    {
+      const auto& u = this->Faces[g];
+      if (this->FaceAlive[g] && (u[0] == x || u[1] == x || u[2] == x) &&
+        (u[0] == y || u[1] == y || u[2] == y))
+      {
+        ++merges;
+        break;
+      }
+    }
+  }
+  return extra == merges;
 }
 
 // Merges b into a at `target` if the result stays a valid medial mesh (the

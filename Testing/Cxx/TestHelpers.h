@@ -3,7 +3,11 @@
 #ifndef medialaxis_TestHelpers_h
 #define medialaxis_TestHelpers_h
 
+#include "AtlasSimplifier.h"
+#include "BlueNoiseSampler.h"
 #include "PolygonMesh.h"
+#include "RestrictedVoronoi.h"
+#include "VoronoiMedialAxis.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkBlueNoiseSurfaceSampler.h"
@@ -120,6 +124,39 @@ struct InitialMedialPipeline
     this->Voronoi->SetInputConnection(1, this->Rvd->GetOutputPort(1));
   }
 };
+
+/// The plain C++ chain sampling -> RVD -> Voronoi MAT -> Atlas simplification.
+struct SimplifiedRun
+{
+  SurfaceSamples Sites;
+  RestrictedVoronoiDiagram Rvd;
+  AtlasMedialMesh Initial;
+  AtlasSimplifierResult Result;
+};
+
+inline SimplifiedRun Simplify(const TriangleMesh& surface, std::size_t samples, std::size_t target,
+  bool cad, bool concaveFiltering = true, bool invaginatedTerm = true, bool fringeCollapses = false)
+{
+  SimplifiedRun run;
+  SamplingOptions sampling;
+  sampling.NumberOfSamples = samples;
+  run.Sites = SampleSurface(surface, sampling);
+  run.Rvd = ComputeRestrictedVoronoi(surface, run.Sites.Points);
+  VoronoiMedialAxisOptions voronoiOptions;
+  voronoiOptions.ConcaveFiltering = concaveFiltering;
+  VoronoiMedialAxisResult voronoi = ComputeVoronoiMedialAxis(
+    surface, run.Sites.Points, run.Sites.TriangleIds, run.Rvd.ConcaveFeature, voronoiOptions);
+  run.Initial.Mesh = std::move(voronoi.Mesh);
+  run.Initial.AtlasOffsets = std::move(voronoi.AtlasOffsets);
+  run.Initial.AtlasSites = std::move(voronoi.AtlasSites);
+  AtlasSimplifierOptions options;
+  options.TargetNumberOfVertices = target;
+  options.PreserveSharpFeatures = cad;
+  options.InvaginatedTerm = invaginatedTerm;
+  options.FringeCollapses = fringeCollapses;
+  run.Result = SimplifyMedialAxis(run.Initial, run.Rvd, run.Sites.Points, options);
+  return run;
+}
 
 /// The first value of a field-data array, NaN when it is missing.
 inline double FieldValue(vtkPolyData* data, const char* name)

@@ -1,0 +1,640 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "FilletDetector.h"
+
+#include "MedialPrimitives.h"
+#include "TriangleAdjacency.h"
+#include "Vec3.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace medialaxis
+{
+namespace
+{
+// Compressed lists: item i owns Items[Offsets[i] .. Offsets[i + 1]).
+struct Lists
+{
+  std::vector<Index> Offsets;
+  std::vector<Index> Items;
+};
+
+// The surface triangles each site's restricted cell touches, each once.
+Lists TrianglesOfSites(std::size_t sites, const std::vector<Index>& polygonSite,
+  const std::vector<Index>& polygonTriangle)
+{
+  std::vector<std::pair<Index, Index>> pairs(polygonSite.size());
+  for (std::size_t p = 0; p < pairs.size(); ++p)
+  {
+    pairs[p] = { polygonSite[p], polygonTriangle[p] };
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  Lists lists;
+  lists.Offsets.assign(sites + 1, 0);
+  for (const auto& pair : pairs)
+  {
+    ++lists.Offsets[pair.first + 1];
+  }
+  for (std::size_t s = 0; s < sites; ++s)
+  {
+    lists.Offsets[s + 1] += lists.Offsets[s];
+  }
+  lists.Items.reserve(pairs.size());
+  for (const auto& pair : pairs)
+  {
+    lists.Items.push_back(pair.second);
+  }
+  return lists;
+}
+
+struct SurfaceTriangle
+{
+  Point3 Centroid;
+  Point3 Normal;
+  double Area;
+};
+
+// Where a triangle is tested against a medial edge: corners, edge midpoints
+// and centroid, so that edges shorter than the triangles still see some.
+constexpr int PointsPerTriangle = 7;
+void TrianglePoints(const TriangleMesh& surface, Index t, Point3 (&points)[PointsPerTriangle])
+{
+  const Triangle& tri = surface.Triangles[t];
+  const Point3 &a = surface.Points[tri[0]], &b = surface.Points[tri[1]],
+               &c = surface.Points[tri[2]];
+  points[0] = a;
+  points[1] = b;
+  points[2] = c;
+  points[3] = 0.5 * (a + b);
+  points[4] = 0.5 * (b + c);
+  points[5] = 0.5 * (c + a);
+  points[6] = (1.0 / 3.0) * (a + b + c);
+}
+
+enum class EdgeVerdict : std::uint8_t
+{
+  Rejected = 0,
+  Accepted = 1,
+  Undecided = 2, // too short for any surface point to fall within its span
+};
+
+// One piece of a centre line's envelope, with the radius that scales the
+// tolerance of points near it.
+struct EnvelopePiece
+{
+  ConePrimitive Cone; // a ball when both ends coincide
+  Point3 Lo, Hi;      // bounding box, grown by the tolerance
+};
+
+class CentreLineEnvelope
+{
+public:
+  CentreLineEnvelope(const std::vector<Point3>& centres, const std::vector<double>& radii,
+    bool closed, const FilletDetectorOptions& options)
+    : Tolerance(options.RadiusTolerance)
+    , CosNormal(std::cos(options.NormalTolerance))
+  {
+    const std::size_t n = centres.size();
+    const std::size_t segments = closed ? n : n - 1;
+    for (std::size_t i = 0; i < segments; ++i)
+    {
+      const std::size_t j = (i + 1) % n;
+      this->Add(centres[i], radii[i], centres[j], radii[j]);
+    }
+    if (!closed)
+    {
+      // The ball rolls on up to one radius past the last centre where it
+      // still touches both faces: e.g. to a sharp cap edge across the fillet.
+      for (int end = 0; end < 2; ++end)
+      {
+        const std::size_t last = end ? n - 1 : 0, previous = end ? n - 2 : 1;
+        const Point3 direction = Normalized(centres[last] - centres[previous]);
+        this->Add(centres[last], radii[last], centres[last] + radii[last] * direction, radii[last]);
+      }
+    }
+  }
+
+  // Whether p lies on the envelope with the surface normal `normal`.
+  bool Matches(const Point3& p, const Point3& normal) const
+  {
+    for (const EnvelopePiece& piece : this->Pieces)
+    {
+      if (p[0] < piece.Lo[0] || p[1] < piece.Lo[1] || p[2] < piece.Lo[2] || p[0] > piece.Hi[0] ||
+        p[1] > piece.Hi[1] || p[2] > piece.Hi[2])
+      {
+        continue;
+      }
+      const ConePrimitive& cone = piece.Cone;
+      const double t =
+        cone.Length > 0.0 ? std::clamp(Dot(p - cone.C[0], cone.Axis) / cone.Length, 0.0, 1.0) : 0.0;
+      const double radius = (1.0 - t) * cone.R[0] + t * cone.R[1];
+      const PrimitiveDistance d = ConeDistance(cone, p);
+      if (std::abs(d.Distance) <= this->Tolerance * radius &&
+        Dot(d.Normal, normal) >= this->CosNormal)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+private:
+  void Add(const Point3& c0, double r0, const Point3& c1, double r1)
+  {
+    EnvelopePiece piece;
+    piece.Cone = MakeCone(c0, r0, c1, r1);
+    const double reach = std::max(r0, r1) * (1.0 + this->Tolerance);
+    for (int k = 0; k < 3; ++k)
+    {
+      piece.Lo[k] = std::min(c0[k], c1[k]) - reach;
+      piece.Hi[k] = std::max(c0[k], c1[k]) + reach;
+    }
+    this->Pieces.push_back(piece);
+  }
+
+  std::vector<EnvelopePiece> Pieces;
+  double Tolerance;
+  double CosNormal;
+};
+
+// Medial edges on exactly one medial triangle, sorted.
+std::vector<std::array<Index, 2>> BoundaryEdges(const MedialMesh& medial)
+{
+  std::vector<std::array<Index, 2>> uses;
+  uses.reserve(3 * medial.Faces.size());
+  for (const auto& f : medial.Faces)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = f[k], b = f[(k + 1) % 3];
+      uses.push_back({ std::min(a, b), std::max(a, b) });
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  std::vector<std::array<Index, 2>> boundary;
+  for (std::size_t i = 0; i < uses.size();)
+  {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j] == uses[i])
+    {
+      ++j;
+    }
+    if (j - i == 1)
+    {
+      boundary.push_back(uses[i]);
+    }
+    i = j;
+  }
+  return boundary;
+}
+
+// Whether medial edge (a, b) is a fillet centre-line edge: most of the
+// surface within its span, among the triangles of both spheres' Atlas, lies
+// on its envelope.
+EdgeVerdict JudgeEdge(Index a, Index b, const MedialMesh& medial,
+  const std::vector<Index>& atlasOffsets, const std::vector<Index>& atlasSites,
+  const Lists& siteTriangles, const TriangleMesh& surface,
+  const std::vector<SurfaceTriangle>& triangles, double minimumRadius, double cosNormal,
+  const FilletDetectorOptions& options, std::vector<Index>& scratch)
+{
+  const double ra = medial.Radii[a], rb = medial.Radii[b];
+  if (std::min(ra, rb) < minimumRadius)
+  {
+    return EdgeVerdict::Rejected;
+  }
+  const ConePrimitive cone = MakeCone(medial.Centers[a], ra, medial.Centers[b], rb);
+  if (cone.Nested || !(cone.Length > 0.0))
+  {
+    return EdgeVerdict::Rejected;
+  }
+  scratch.clear();
+  for (Index v : { a, b })
+  {
+    for (Index k = atlasOffsets[v]; k < atlasOffsets[v + 1]; ++k)
+    {
+      const Index site = atlasSites[k];
+      scratch.insert(scratch.end(), siteTriangles.Items.begin() + siteTriangles.Offsets[site],
+        siteTriangles.Items.begin() + siteTriangles.Offsets[site + 1]);
+    }
+  }
+  std::sort(scratch.begin(), scratch.end());
+  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+  double inSpan = 0.0, matching = 0.0;
+  Point3 points[PointsPerTriangle];
+  for (Index t : scratch)
+  {
+    const SurfaceTriangle& tri = triangles[t];
+    TrianglePoints(surface, t, points);
+    for (const Point3& p : points)
+    {
+      const double u = Dot(p - cone.C[0], cone.Axis) / cone.Length;
+      if (u < 0.0 || u > 1.0)
+      {
+        continue;
+      }
+      inSpan += tri.Area;
+      const PrimitiveDistance d = ConeDistance(cone, p);
+      const double radius = (1.0 - u) * ra + u * rb;
+      if (std::abs(d.Distance) <= options.RadiusTolerance * radius &&
+        Dot(d.Normal, tri.Normal) >= cosNormal)
+      {
+        matching += tri.Area;
+      }
+    }
+  }
+  if (inSpan == 0.0)
+  {
+    return EdgeVerdict::Undecided;
+  }
+  return matching >= options.MinimumConsistentFraction * inSpan ? EdgeVerdict::Accepted
+                                                                : EdgeVerdict::Rejected;
+}
+
+// Angle between the incoming and outgoing directions of a polyline at `at`.
+double TurnAngle(const Point3& from, const Point3& at, const Point3& to)
+{
+  const Point3 u = Normalized(at - from), w = Normalized(to - at);
+  return std::acos(std::clamp(Dot(u, w), -1.0, 1.0));
+}
+
+// Removes spurs: branches from a free end to a junction (three or more
+// edges) shorter than the junction's ball radius, left by fins at the side of
+// a centre line. Repeated, since removing a spur can expose another.
+std::vector<std::array<Index, 2>> PruneSpurs(
+  std::vector<std::array<Index, 2>> edges, const MedialMesh& medial)
+{
+  for (int round = 0; round < 4; ++round)
+  {
+    std::vector<std::vector<Index>> incident(medial.NumberOfVertices());
+    for (std::size_t e = 0; e < edges.size(); ++e)
+    {
+      incident[edges[e][0]].push_back(static_cast<Index>(e));
+      incident[edges[e][1]].push_back(static_cast<Index>(e));
+    }
+    std::vector<std::uint8_t> removed(edges.size(), 0);
+    bool changed = false;
+    for (std::size_t v = 0; v < incident.size(); ++v)
+    {
+      if (incident[v].size() != 1)
+      {
+        continue;
+      }
+      std::vector<Index> path;
+      Index at = static_cast<Index>(v), e = incident[v][0];
+      double length = 0.0;
+      while (true)
+      {
+        path.push_back(e);
+        const Index next = edges[e][0] == at ? edges[e][1] : edges[e][0];
+        length += Norm(medial.Centers[next] - medial.Centers[at]);
+        at = next;
+        if (incident[at].size() != 2)
+        {
+          break;
+        }
+        e = incident[at][0] == e ? incident[at][1] : incident[at][0];
+      }
+      if (incident[at].size() >= 3 && length < medial.Radii[at])
+      {
+        for (Index p : path)
+        {
+          changed = changed || !removed[p];
+          removed[p] = 1;
+        }
+      }
+    }
+    if (!changed)
+    {
+      break;
+    }
+    std::vector<std::array<Index, 2>> kept;
+    for (std::size_t e = 0; e < edges.size(); ++e)
+    {
+      if (!removed[e])
+      {
+        kept.push_back(edges[e]);
+      }
+    }
+    edges.swap(kept);
+  }
+  return edges;
+}
+
+// Chains the accepted edges into polylines, split where more or fewer than
+// two accepted edges meet or where the line turns by more than splitAngle.
+std::vector<Fillet> ChainEdges(
+  const std::vector<std::array<Index, 2>>& edges, const MedialMesh& medial, double splitAngle)
+{
+  const std::size_t nv = medial.NumberOfVertices();
+  std::vector<Index> offsets(nv + 1, 0);
+  for (const auto& e : edges)
+  {
+    ++offsets[e[0] + 1];
+    ++offsets[e[1] + 1];
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    offsets[v + 1] += offsets[v];
+  }
+  std::vector<Index> incident(offsets[nv]);
+  {
+    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+    for (std::size_t e = 0; e < edges.size(); ++e)
+    {
+      incident[fill[edges[e][0]]++] = static_cast<Index>(e);
+      incident[fill[edges[e][1]]++] = static_cast<Index>(e);
+    }
+  }
+  auto other = [&](Index e, Index v) { return edges[e][0] == v ? edges[e][1] : edges[e][0]; };
+  auto isBreak = [&](Index v)
+  {
+    if (offsets[v + 1] - offsets[v] != 2)
+    {
+      return true;
+    }
+    const Index a = other(incident[offsets[v]], v), b = other(incident[offsets[v] + 1], v);
+    // Directions along edges much shorter than the ball are noise.
+    const double shortest = 0.25 * medial.Radii[v];
+    if (Norm(medial.Centers[a] - medial.Centers[v]) < shortest ||
+      Norm(medial.Centers[b] - medial.Centers[v]) < shortest)
+    {
+      return false;
+    }
+    return TurnAngle(medial.Centers[a], medial.Centers[v], medial.Centers[b]) > splitAngle;
+  };
+  std::vector<std::uint8_t> used(edges.size(), 0);
+  std::vector<Fillet> chains;
+  auto walk = [&](Index start, Index firstEdge)
+  {
+    Fillet chain;
+    chain.Vertices.push_back(start);
+    Index v = start, e = firstEdge;
+    while (true)
+    {
+      used[e] = 1;
+      v = other(e, v);
+      if (v == start)
+      {
+        chain.Closed = true;
+        break;
+      }
+      chain.Vertices.push_back(v);
+      if (isBreak(v))
+      {
+        break;
+      }
+      const Index a = incident[offsets[v]], b = incident[offsets[v] + 1];
+      e = used[a] ? b : a;
+      if (used[e])
+      {
+        break;
+      }
+    }
+    chains.push_back(std::move(chain));
+  };
+  for (Index v = 0; v < static_cast<Index>(nv); ++v)
+  {
+    if (offsets[v + 1] > offsets[v] && isBreak(v))
+    {
+      for (Index k = offsets[v]; k < offsets[v + 1]; ++k)
+      {
+        if (!used[incident[k]])
+        {
+          walk(v, incident[k]);
+        }
+      }
+    }
+  }
+  // What is left are loops through vertices that are no break.
+  for (std::size_t e = 0; e < edges.size(); ++e)
+  {
+    if (!used[e])
+    {
+      walk(edges[e][0], static_cast<Index>(e));
+    }
+  }
+  return chains;
+}
+
+void Measure(Fillet& chain, const MedialMesh& medial)
+{
+  const std::size_t n = chain.Vertices.size();
+  const std::size_t segments = chain.Closed ? n : n - 1;
+  double weighted = 0.0;
+  chain.MinimumRadius = std::numeric_limits<double>::infinity();
+  chain.MaximumRadius = 0.0;
+  for (Index v : chain.Vertices)
+  {
+    chain.MinimumRadius = std::min(chain.MinimumRadius, medial.Radii[v]);
+    chain.MaximumRadius = std::max(chain.MaximumRadius, medial.Radii[v]);
+  }
+  for (std::size_t i = 0; i < segments; ++i)
+  {
+    const Index a = chain.Vertices[i], b = chain.Vertices[(i + 1) % n];
+    const double length = Norm(medial.Centers[b] - medial.Centers[a]);
+    chain.Length += length;
+    weighted += 0.5 * length * (medial.Radii[a] + medial.Radii[b]);
+  }
+  chain.MeanRadius = chain.Length > 0.0 ? weighted / chain.Length : chain.MaximumRadius;
+  chain.RadiusVariation =
+    chain.MeanRadius > 0.0 ? (chain.MaximumRadius - chain.MinimumRadius) / chain.MeanRadius : 0.0;
+}
+
+void CheckInput(const TriangleMesh& surface, const MedialMesh& medial,
+  const std::vector<Index>& atlasOffsets, const std::vector<Index>& atlasSites,
+  const std::vector<Index>& polygonSite, const std::vector<Index>& polygonTriangle,
+  std::size_t& sites)
+{
+  if (atlasOffsets.size() != medial.NumberOfVertices() + 1 || atlasOffsets.front() != 0 ||
+    atlasOffsets.back() != static_cast<Index>(atlasSites.size()))
+  {
+    throw std::invalid_argument("the Atlas offsets do not match the medial mesh's " +
+      std::to_string(medial.NumberOfVertices()) + " vertices");
+  }
+  if (polygonSite.size() != polygonTriangle.size())
+  {
+    throw std::invalid_argument("the restricted Voronoi diagram needs one site and one triangle "
+                                "per polygon");
+  }
+  sites = 0;
+  for (std::size_t p = 0; p < polygonSite.size(); ++p)
+  {
+    if (polygonSite[p] < 0 || polygonTriangle[p] < 0 ||
+      polygonTriangle[p] >= static_cast<Index>(surface.Triangles.size()))
+    {
+      throw std::invalid_argument("restricted Voronoi polygon " + std::to_string(p) +
+        " refers to triangle " + std::to_string(polygonTriangle[p]) + ", but the surface has " +
+        std::to_string(surface.Triangles.size()) +
+        " triangles: the diagram was computed on another surface");
+    }
+    sites = std::max(sites, static_cast<std::size_t>(polygonSite[p]) + 1);
+  }
+  for (Index s : atlasSites)
+  {
+    if (s < 0 || static_cast<std::size_t>(s) >= sites)
+    {
+      throw std::invalid_argument("Atlas site " + std::to_string(s) +
+        " has no polygon in the restricted Voronoi diagram (" + std::to_string(sites) + " sites)");
+    }
+  }
+}
+}
+
+FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMesh& medial,
+  const std::vector<Index>& atlasOffsets, const std::vector<Index>& atlasSites,
+  const std::vector<Index>& polygonSite, const std::vector<Index>& polygonTriangle,
+  const FilletDetectorOptions& options)
+{
+  std::size_t sites = 0;
+  CheckInput(surface, medial, atlasOffsets, atlasSites, polygonSite, polygonTriangle, sites);
+  FilletDetectionResult result;
+  result.TriangleFillet.assign(surface.Triangles.size(), -1);
+  if (surface.Points.empty() || medial.NumberOfVertices() == 0)
+  {
+    return result;
+  }
+  const auto [lo, hi] = BoundingBox(surface.Points);
+  result.Diagonal = Norm(hi - lo);
+  const double cosNormal = std::cos(options.NormalTolerance);
+
+  std::vector<SurfaceTriangle> triangles(surface.Triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const Triangle& tri = surface.Triangles[t];
+    const Point3 &a = surface.Points[tri[0]], &b = surface.Points[tri[1]],
+                 &c = surface.Points[tri[2]];
+    const Point3 n = Cross(b - a, c - a);
+    triangles[t] = { (1.0 / 3.0) * (a + b + c), Normalized(n), 0.5 * Norm(n) };
+  }
+  const Lists siteTriangles = TrianglesOfSites(sites, polygonSite, polygonTriangle);
+
+  // 1. Centre-line edges among the medial boundary edges.
+  const std::vector<std::array<Index, 2>> boundary = BoundaryEdges(medial);
+  result.BoundaryEdges = boundary.size();
+  std::vector<EdgeVerdict> verdict(boundary.size(), EdgeVerdict::Rejected);
+  const double minimumRadius = options.MinimumRadius * result.Diagonal;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, boundary.size(), 64),
+    [&](const tbb::blocked_range<std::size_t>& range)
+    {
+      std::vector<Index> scratch;
+      for (std::size_t e = range.begin(); e != range.end(); ++e)
+      {
+        verdict[e] = JudgeEdge(boundary[e][0], boundary[e][1], medial, atlasOffsets, atlasSites,
+          siteTriangles, surface, triangles, minimumRadius, cosNormal, options, scratch);
+      }
+    });
+  // Gaps of one edge in a centre line: an edge too short to judge, or a
+  // rejected one between two ends of accepted edges, joins them.
+  std::vector<int> acceptedDegree(medial.NumberOfVertices(), 0);
+  for (std::size_t e = 0; e < boundary.size(); ++e)
+  {
+    if (verdict[e] == EdgeVerdict::Accepted)
+    {
+      ++acceptedDegree[boundary[e][0]];
+      ++acceptedDegree[boundary[e][1]];
+    }
+  }
+  std::vector<std::array<Index, 2>> centreLineEdges;
+  for (std::size_t e = 0; e < boundary.size(); ++e)
+  {
+    const int da = acceptedDegree[boundary[e][0]], db = acceptedDegree[boundary[e][1]];
+    const bool radiusOk =
+      std::min(medial.Radii[boundary[e][0]], medial.Radii[boundary[e][1]]) >= minimumRadius;
+    const bool bridge = radiusOk &&
+      ((verdict[e] == EdgeVerdict::Undecided && da > 0 && db > 0) ||
+        (verdict[e] == EdgeVerdict::Rejected && da == 1 && db == 1));
+    if (verdict[e] == EdgeVerdict::Accepted || bridge)
+    {
+      centreLineEdges.push_back(boundary[e]);
+    }
+  }
+  result.CentreLineEdges = centreLineEdges.size();
+
+  // 2. Polylines, without the short ones.
+  centreLineEdges = PruneSpurs(std::move(centreLineEdges), medial);
+  for (Fillet& chain : ChainEdges(centreLineEdges, medial, options.SplitAngle))
+  {
+    Measure(chain, medial);
+    if (chain.Length >= options.MinimumLength * result.Diagonal)
+    {
+      result.Fillets.push_back(std::move(chain));
+    }
+  }
+
+  // 3. Fillet faces: grown from the Atlas triangles of each centre line over
+  // neighbouring triangles whose corners and centroid lie on its envelope.
+  // A triangle claimed by an earlier fillet (where fillets meet at a corner
+  // ball) keeps that fillet.
+  const TriangleAdjacency adjacency = ComputeTriangleAdjacency(surface, 0.0);
+  std::vector<int> tested(surface.Triangles.size(), -1);
+  for (std::size_t f = 0; f < result.Fillets.size(); ++f)
+  {
+    Fillet& fillet = result.Fillets[f];
+    std::vector<Point3> centres;
+    std::vector<double> radii;
+    for (Index v : fillet.Vertices)
+    {
+      centres.push_back(medial.Centers[v]);
+      radii.push_back(medial.Radii[v]);
+    }
+    const CentreLineEnvelope envelope(centres, radii, fillet.Closed, options);
+    auto onFillet = [&](Index t)
+    {
+      const Triangle& tri = surface.Triangles[t];
+      const Point3& normal = triangles[t].Normal;
+      return envelope.Matches(triangles[t].Centroid, normal) &&
+        envelope.Matches(surface.Points[tri[0]], normal) &&
+        envelope.Matches(surface.Points[tri[1]], normal) &&
+        envelope.Matches(surface.Points[tri[2]], normal);
+    };
+    std::deque<Index> front;
+    auto visit = [&](Index t)
+    {
+      if (tested[t] == static_cast<int>(f) || result.TriangleFillet[t] >= 0)
+      {
+        return;
+      }
+      tested[t] = static_cast<int>(f);
+      if (onFillet(t))
+      {
+        result.TriangleFillet[t] = static_cast<int>(f);
+        ++fillet.SurfaceTriangles;
+        fillet.SurfaceArea += triangles[t].Area;
+        front.push_back(t);
+      }
+    };
+    for (Index v : fillet.Vertices)
+    {
+      for (Index k = atlasOffsets[v]; k < atlasOffsets[v + 1]; ++k)
+      {
+        const Index site = atlasSites[k];
+        for (Index i = siteTriangles.Offsets[site]; i < siteTriangles.Offsets[site + 1]; ++i)
+        {
+          visit(siteTriangles.Items[i]);
+        }
+      }
+    }
+    while (!front.empty())
+    {
+      const Index t = front.front();
+      front.pop_front();
+      for (Index neighbour : adjacency.Neighbour[t])
+      {
+        if (neighbour >= 0)
+        {
+          visit(neighbour);
+        }
+      }
+    }
+  }
+  return result;
+}
+}

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "FilletDetector.h"
 
+#include "CentreLineGraph.h"
 #include "MedialPrimitives.h"
 #include "TriangleAdjacency.h"
 #include "Vec3.h"
@@ -19,6 +20,8 @@ namespace medialaxis
 {
 namespace
 {
+constexpr double Pi = 3.14159265358979323846;
+
 // Compressed lists: item i owns Items[Offsets[i] .. Offsets[i + 1]).
 struct Lists
 {
@@ -228,6 +231,7 @@ EdgeVerdict JudgeEdge(Index a, Index b, const MedialMesh& medial,
   std::sort(scratch.begin(), scratch.end());
   scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
   double inSpan = 0.0, matching = 0.0;
+  std::vector<double> around; // angles of the matching normals around the axis
   Point3 points[PointsPerTriangle];
   for (Index t : scratch)
   {
@@ -247,6 +251,7 @@ EdgeVerdict JudgeEdge(Index a, Index b, const MedialMesh& medial,
         Dot(d.Normal, tri.Normal) >= cosNormal)
       {
         matching += tri.Area;
+        around.push_back(std::atan2(Dot(tri.Normal, cone.Perp2), Dot(tri.Normal, cone.Perp1)));
       }
     }
   }
@@ -254,174 +259,20 @@ EdgeVerdict JudgeEdge(Index a, Index b, const MedialMesh& medial,
   {
     return EdgeVerdict::Undecided;
   }
-  return matching >= options.MinimumConsistentFraction * inSpan ? EdgeVerdict::Accepted
-                                                                : EdgeVerdict::Rejected;
-}
-
-// Angle between the incoming and outgoing directions of a polyline at `at`.
-double TurnAngle(const Point3& from, const Point3& at, const Point3& to)
-{
-  const Point3 u = Normalized(at - from), w = Normalized(to - at);
-  return std::acos(std::clamp(Dot(u, w), -1.0, 1.0));
-}
-
-// Removes spurs: branches from a free end to a junction (three or more
-// edges) shorter than the junction's ball radius, left by fins at the side of
-// a centre line. Repeated, since removing a spur can expose another.
-std::vector<std::array<Index, 2>> PruneSpurs(
-  std::vector<std::array<Index, 2>> edges, const MedialMesh& medial)
-{
-  for (int round = 0; round < 4; ++round)
+  if (matching < options.MinimumConsistentFraction * inSpan)
   {
-    std::vector<std::vector<Index>> incident(medial.NumberOfVertices());
-    for (std::size_t e = 0; e < edges.size(); ++e)
-    {
-      incident[edges[e][0]].push_back(static_cast<Index>(e));
-      incident[edges[e][1]].push_back(static_cast<Index>(e));
-    }
-    std::vector<std::uint8_t> removed(edges.size(), 0);
-    bool changed = false;
-    for (std::size_t v = 0; v < incident.size(); ++v)
-    {
-      if (incident[v].size() != 1)
-      {
-        continue;
-      }
-      std::vector<Index> path;
-      Index at = static_cast<Index>(v), e = incident[v][0];
-      double length = 0.0;
-      while (true)
-      {
-        path.push_back(e);
-        const Index next = edges[e][0] == at ? edges[e][1] : edges[e][0];
-        length += Norm(medial.Centers[next] - medial.Centers[at]);
-        at = next;
-        if (incident[at].size() != 2)
-        {
-          break;
-        }
-        e = incident[at][0] == e ? incident[at][1] : incident[at][0];
-      }
-      if (incident[at].size() >= 3 && length < medial.Radii[at])
-      {
-        for (Index p : path)
-        {
-          changed = changed || !removed[p];
-          removed[p] = 1;
-        }
-      }
-    }
-    if (!changed)
-    {
-      break;
-    }
-    std::vector<std::array<Index, 2>> kept;
-    for (std::size_t e = 0; e < edges.size(); ++e)
-    {
-      if (!removed[e])
-      {
-        kept.push_back(edges[e]);
-      }
-    }
-    edges.swap(kept);
+    return EdgeVerdict::Rejected;
   }
-  return edges;
-}
-
-// Chains the accepted edges into polylines, split where more or fewer than
-// two accepted edges meet or where the line turns by more than splitAngle.
-std::vector<Fillet> ChainEdges(
-  const std::vector<std::array<Index, 2>>& edges, const MedialMesh& medial, double splitAngle)
-{
-  const std::size_t nv = medial.NumberOfVertices();
-  std::vector<Index> offsets(nv + 1, 0);
-  for (const auto& e : edges)
+  // A rolling ball touches an arc of the surface; a ball on an ordinary
+  // sheet boundary touches a flat face along the edge: one normal direction.
+  std::sort(around.begin(), around.end());
+  double largestGap = 2.0 * Pi - (around.back() - around.front());
+  for (std::size_t i = 1; i < around.size(); ++i)
   {
-    ++offsets[e[0] + 1];
-    ++offsets[e[1] + 1];
+    largestGap = std::max(largestGap, around[i] - around[i - 1]);
   }
-  for (std::size_t v = 0; v < nv; ++v)
-  {
-    offsets[v + 1] += offsets[v];
-  }
-  std::vector<Index> incident(offsets[nv]);
-  {
-    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-    for (std::size_t e = 0; e < edges.size(); ++e)
-    {
-      incident[fill[edges[e][0]]++] = static_cast<Index>(e);
-      incident[fill[edges[e][1]]++] = static_cast<Index>(e);
-    }
-  }
-  auto other = [&](Index e, Index v) { return edges[e][0] == v ? edges[e][1] : edges[e][0]; };
-  auto isBreak = [&](Index v)
-  {
-    if (offsets[v + 1] - offsets[v] != 2)
-    {
-      return true;
-    }
-    const Index a = other(incident[offsets[v]], v), b = other(incident[offsets[v] + 1], v);
-    // Directions along edges much shorter than the ball are noise.
-    const double shortest = 0.25 * medial.Radii[v];
-    if (Norm(medial.Centers[a] - medial.Centers[v]) < shortest ||
-      Norm(medial.Centers[b] - medial.Centers[v]) < shortest)
-    {
-      return false;
-    }
-    return TurnAngle(medial.Centers[a], medial.Centers[v], medial.Centers[b]) > splitAngle;
-  };
-  std::vector<std::uint8_t> used(edges.size(), 0);
-  std::vector<Fillet> chains;
-  auto walk = [&](Index start, Index firstEdge)
-  {
-    Fillet chain;
-    chain.Vertices.push_back(start);
-    Index v = start, e = firstEdge;
-    while (true)
-    {
-      used[e] = 1;
-      v = other(e, v);
-      if (v == start)
-      {
-        chain.Closed = true;
-        break;
-      }
-      chain.Vertices.push_back(v);
-      if (isBreak(v))
-      {
-        break;
-      }
-      const Index a = incident[offsets[v]], b = incident[offsets[v] + 1];
-      e = used[a] ? b : a;
-      if (used[e])
-      {
-        break;
-      }
-    }
-    chains.push_back(std::move(chain));
-  };
-  for (Index v = 0; v < static_cast<Index>(nv); ++v)
-  {
-    if (offsets[v + 1] > offsets[v] && isBreak(v))
-    {
-      for (Index k = offsets[v]; k < offsets[v + 1]; ++k)
-      {
-        if (!used[incident[k]])
-        {
-          walk(v, incident[k]);
-        }
-      }
-    }
-  }
-  // What is left are loops through vertices that are no break.
-  for (std::size_t e = 0; e < edges.size(); ++e)
-  {
-    if (!used[e])
-    {
-      walk(edges[e][0], static_cast<Index>(e));
-    }
-  }
-  return chains;
+  return 2.0 * Pi - largestGap >= options.MinimumArcAngle ? EdgeVerdict::Accepted
+                                                          : EdgeVerdict::Rejected;
 }
 
 void Measure(Fillet& chain, const MedialMesh& medial)
@@ -559,9 +410,14 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
   result.CentreLineEdges = centreLineEdges.size();
 
   // 2. Polylines, without the short ones.
-  centreLineEdges = PruneSpurs(std::move(centreLineEdges), medial);
-  for (Fillet& chain : ChainEdges(centreLineEdges, medial, options.SplitAngle))
+  CentreLineGraphOptions graphOptions;
+  graphOptions.SplitAngle = options.SplitAngle;
+  for (const CentreLine& line :
+    TraceCentreLines(centreLineEdges, medial.Centers, medial.Radii, graphOptions))
   {
+    Fillet chain;
+    chain.Vertices = line.Vertices;
+    chain.Closed = line.Closed;
     Measure(chain, medial);
     if (chain.Length >= options.MinimumLength * result.Diagonal)
     {

@@ -34,6 +34,9 @@ struct FilletDetectorOptions
   /// Fraction of an edge's corresponding surface (by area, within the edge's
   /// span) that must lie on its envelope for the edge to be a centre-line edge.
   double MinimumConsistentFraction = 0.5;
+  /// Smallest arc (radians) the matching surface must wrap around an edge:
+  /// a fillet's ball touches an arc, a sheet boundary's ball a flat face.
+  double MinimumArcAngle = 0.3490658503988659; // 20 degrees
   /// Balls smaller than this fraction of the surface's bounding-box diagonal
   /// belong to sharp edges (radius 0), not to fillets.
   double MinimumRadius = 0.002;

@@ -140,9 +140,7 @@ TEST_P(RoundedBoxFillets, TwelveCentreLinesWithTheirRadius)
   }
   const double diagonal = 2.0 * std::sqrt(3.0);
   const MedialMesh& m = d.Run.Result.Medial.Mesh;
-  // Measured: radius 0.1 -> 18 centre lines (breaks at junctions of fins),
-  // 0.25 -> 23; chaining is still to be made robust, see the disabled test.
-  EXPECT_GE(d.Fillets.Fillets.size(), 12u);
+  ASSERT_EQ(d.Fillets.Fillets.size(), 12u);
   for (const Fillet& f : d.Fillets.Fillets)
   {
     EXPECT_NEAR(f.MeanRadius, rho, 0.03 * rho);
@@ -161,6 +159,10 @@ TEST_P(RoundedBoxFillets, TwelveCentreLinesWithTheirRadius)
 }
 
 INSTANTIATE_TEST_SUITE_P(FilletDetector, RoundedBoxFillets, ::testing::Values(0.1));
+// Measured with radius 0.25 (fringe collapses on): 12 centre lines, mean radii
+// within 1%, but precision 0.92 (a row of flat triangles beside each fillet
+// lies within 5% of the envelope) and recall 0.97.
+INSTANTIATE_TEST_SUITE_P(DISABLED_LargeFillets, RoundedBoxFillets, ::testing::Values(0.25));
 
 // The generated parts are closed, manifold and outward with their fillet
 // faces labelled.
@@ -206,12 +208,14 @@ std::vector<int> MatchFillets(const Detection& d, const std::vector<int>& truth,
   return match;
 }
 
-// Disabled until the chaining is robust. Measured at 50K sites -> 2,000
-// vertices with fringe collapses: the prism gives 5 pieces (precision 0.87,
-// recall 0.65), the cylinder rim 13 pieces (precision 0.21: sheet boundaries
-// with radius 0.7 pass the edge test), the variable-radius edge one fillet
-// (precision 0.91, recall 0.83, radius profile off by more than 5% near
-// the caps).
+// Disabled until they pass. Measured at 50K sites -> 2,000 vertices with
+// fringe collapses: the prism gives 2 fillets but only half of each edge
+// (precision 0.91, recall 0.46: parallel fins along the edges leave the
+// centre-line graph in pieces); the cylinder rim one closed fillet with the
+// right radius (precision 0.82: a row of side and cap triangles beside the
+// fillet lies within 5% of its envelope); the variable-radius edge one
+// fillet (precision 0.91, recall 0.83, radius off by more than 5% near the
+// caps).
 
 // Two of the four vertical edges rounded (radius 0.25), the others and the
 // caps sharp: exactly the two fillets, each along its whole edge.

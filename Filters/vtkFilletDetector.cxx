@@ -182,6 +182,7 @@ int vtkFilletDetector::RequestData(
   options.RadiusTolerance = this->RadiusTolerance;
   options.NormalTolerance = this->NormalTolerance * DegreesToRadians;
   options.MinimumConsistentFraction = this->MinimumConsistentFraction;
+  options.MinimumArcAngle = this->MinimumArcAngle * DegreesToRadians;
   options.MinimumRadius = 0.01 * this->MinimumRadius;
   options.MinimumLength = 0.01 * this->MinimumLength;
   options.SplitAngle = this->SplitAngle * DegreesToRadians;
@@ -221,6 +222,7 @@ void vtkFilletDetector::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RadiusTolerance: " << this->RadiusTolerance << "\n";
   os << indent << "NormalTolerance: " << this->NormalTolerance << "\n";
   os << indent << "MinimumConsistentFraction: " << this->MinimumConsistentFraction << "\n";
+  os << indent << "MinimumArcAngle: " << this->MinimumArcAngle << "\n";
   os << indent << "MinimumRadius: " << this->MinimumRadius << "\n";
   os << indent << "MinimumLength: " << this->MinimumLength << "\n";
   os << indent << "SplitAngle: " << this->SplitAngle << "\n";

@@ -15,7 +15,8 @@
  * correspond to (their Atlas), at least MinimumConsistentFraction of the area
  * within the edge's span lies on the edge's envelope: at a distance within
  * RadiusTolerance times the local radius, with a normal within
- * NormalTolerance of the envelope's. Edges with a radius below MinimumRadius
+ * NormalTolerance of the envelope's, wrapping an arc of at least
+ * MinimumArcAngle around it. Edges with a radius below MinimumRadius
  * (sharp edges, radius 0) are no fillet. Accepted edges are chained into
  * polylines, split where three or more meet or where the line turns by more
  * than SplitAngle; polylines shorter than MinimumLength are dropped. The
@@ -74,6 +75,14 @@ public:
   ///@}
 
   ///@{
+  /// Smallest arc in degrees the matching surface must wrap around a
+  /// centre-line edge: a rolling ball touches an arc, a ball on an ordinary
+  /// sheet boundary touches a flat face. Default 20.
+  vtkSetClampMacro(MinimumArcAngle, double, 0.0, 360.0);
+  vtkGetMacro(MinimumArcAngle, double);
+  ///@}
+
+  ///@{
   /// Smallest fillet radius, in percent of the surface's bounding-box
   /// diagonal: thinner balls sit on sharp edges. Default 0.2 (%).
   vtkSetClampMacro(MinimumRadius, double, 0.0, 100.0);
@@ -104,6 +113,7 @@ protected:
   double RadiusTolerance = 0.05;
   double NormalTolerance = 30.0;
   double MinimumConsistentFraction = 0.5;
+  double MinimumArcAngle = 20.0;
   double MinimumRadius = 0.2;
   double MinimumLength = 2.0;
   double SplitAngle = 50.0;

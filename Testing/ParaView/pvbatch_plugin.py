@@ -97,6 +97,22 @@ atlas = ExtractMedialAtlas(Input=OutputPort(simplified, 0),
 cells = servermanager.Fetch(atlas)
 check(cells.GetNumberOfCells() > 0, "the Atlas of sphere 7 is empty")
 check(cells.GetFieldData().GetArray("AtlasArea").GetValue(0) > 0, "the Atlas has no area")
+# Fillets of a box with rounded edges: 12 centre lines of radius 0.1.
+box = MedialTestShape(Shape="Rounded Box", FilletRadius=0.1, Resolution=16)
+boxSites = BlueNoiseSurfaceSampler(Input=box, NumberOfSamples=50000)
+boxCells = RestrictedVoronoiDiagram(Input=box, Sites=boxSites)
+boxInitial = VoronoiMedialAxis(Input=box, Sites=OutputPort(boxCells, 1))
+boxMat = AtlasMedialAxisSimplifier(Input=boxInitial, RestrictedVoronoiDiagram=OutputPort(boxCells, 0),
+                                   TargetNumberOfVertices=5000, PreserveSharpFeatures=1)
+fillets = FilletDetector(Input=OutputPort(boxMat, 0), RestrictedVoronoiDiagram=OutputPort(boxMat, 1),
+                         Surface=box)
+fillets.UpdatePipeline()
+centreLines = servermanager.Fetch(fillets, idx=0)
+check(centreLines.GetNumberOfCells() == 12, "expected 12 fillets, got %d" % centreLines.GetNumberOfCells())
+meanRadius = centreLines.GetCellData().GetArray("MeanRadius")
+check(all(abs(meanRadius.GetValue(f) - 0.1) < 0.003 for f in range(12)), "fillet radii are not 0.1")
+faces = servermanager.Fetch(fillets, idx=1)
+check(faces.GetCellData().GetArray("FilletId").GetRange() == (-1.0, 11.0), "fillet faces not labelled")
 # The one-click filter on a real CAD part.
 fandisk = os.path.join(mesh_dir, "fandisk.off")
 if os.path.exists(fandisk):

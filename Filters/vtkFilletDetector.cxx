@@ -47,8 +47,7 @@ void AddCounts(vtkPolyData* output, const medialaxis::FilletDetectionResult& res
 }
 
 // One polyline per fillet over its own copies of the centre points.
-void CentreLinesToPolyData(const medialaxis::FilletDetectionResult& result,
-  const medialaxis::MedialMesh& medial, vtkPolyData* output)
+void CentreLinesToPolyData(const medialaxis::FilletDetectionResult& result, vtkPolyData* output)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -68,11 +67,11 @@ void CentreLinesToPolyData(const medialaxis::FilletDetectionResult& result,
   {
     const medialaxis::Fillet& fillet = result.Fillets[f];
     const vtkIdType first = points->GetNumberOfPoints();
-    for (medialaxis::Index v : fillet.Vertices)
+    for (std::size_t k = 0; k < fillet.Vertices.size(); ++k)
     {
-      points->InsertNextPoint(medial.Centers[v].data());
-      radius->InsertNextValue(medial.Radii[v]);
-      vertexIds->InsertNextValue(static_cast<vtkIdType>(v));
+      points->InsertNextPoint(fillet.Centres[k].data());
+      radius->InsertNextValue(fillet.Radii[k]);
+      vertexIds->InsertNextValue(static_cast<vtkIdType>(fillet.Vertices[k]));
     }
     const vtkIdType n = static_cast<vtkIdType>(fillet.Vertices.size());
     lines->InsertNextCell(n + (fillet.Closed ? 1 : 0));
@@ -180,6 +179,7 @@ int vtkFilletDetector::RequestData(
 
   medialaxis::FilletDetectorOptions options;
   options.RadiusTolerance = this->RadiusTolerance;
+  options.FaceTolerance = this->FaceTolerance;
   options.NormalTolerance = this->NormalTolerance * DegreesToRadians;
   options.MinimumConsistentFraction = this->MinimumConsistentFraction;
   options.MinimumArcAngle = this->MinimumArcAngle * DegreesToRadians;
@@ -199,7 +199,7 @@ int vtkFilletDetector::RequestData(
   }
   this->UpdateProgress(0.9);
 
-  CentreLinesToPolyData(result, medial, lines);
+  CentreLinesToPolyData(result, lines);
   AddCounts(lines, result);
   medialaxis::TriangleMeshToPolyData(surface, surfaceOut);
   vtkNew<vtkIntArray> filletOfTriangle;
@@ -220,6 +220,7 @@ void vtkFilletDetector::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RadiusTolerance: " << this->RadiusTolerance << "\n";
+  os << indent << "FaceTolerance: " << this->FaceTolerance << "\n";
   os << indent << "NormalTolerance: " << this->NormalTolerance << "\n";
   os << indent << "MinimumConsistentFraction: " << this->MinimumConsistentFraction << "\n";
   os << indent << "MinimumArcAngle: " << this->MinimumArcAngle << "\n";

@@ -18,11 +18,15 @@
  * NormalTolerance of the envelope's, wrapping an arc of at least
  * MinimumArcAngle around it. Edges with a radius below MinimumRadius
  * (sharp edges, radius 0) are no fillet. Accepted edges are chained into
- * polylines, split where three or more meet or where the line turns by more
- * than SplitAngle; polylines shorter than MinimumLength are dropped. The
- * fillet faces of each polyline are grown over the surface from its Atlas
- * through the triangles whose corners all lie on its envelope (the ball rolls
- * on up to one radius past a polyline's end, e.g. to a sharp edge).
+ * polylines (small cycles opened, short spurs pruned, small gaps bridged),
+ * split where three or more meet or where the line turns by more than
+ * SplitAngle; polylines shorter than MinimumLength are dropped. The fillet
+ * faces of each polyline are grown over the surface from its Atlas through
+ * the triangles whose corners all lie on its envelope (the ball rolls on up
+ * to one radius past a polyline's end, e.g. to a sharp edge); each vertex of
+ * the polyline is then moved to the centre of the circle fitted to the
+ * fillet's cross-section there, and the faces are grown again along the
+ * refined line, their corners within FaceTolerance of its envelope.
  *
  * Inputs: port 0 the medial mesh with its Atlas (field data `AtlasSites` /
  * `AtlasOffsets`, point data `Radius`); port 1 the restricted Voronoi diagram
@@ -31,7 +35,8 @@
  * surface the diagram was computed on.
  *
  * Output 0: the centre lines, one polyline per fillet (a closed fillet
- * repeats its first point), with point data `Radius` and `MedialVertexId`
+ * repeats its first point) through the refined ball centres, with point
+ * data `Radius` (refined) and `MedialVertexId` (the medial vertex refined)
  * and cell data `FilletId`, `MeanRadius` (length-weighted), `MinimumRadius`,
  * `MaximumRadius`, `RadiusVariation` ((max - min) / mean: 0 for a
  * constant-radius fillet), `Length` and `SurfaceArea` (of its faces).
@@ -58,6 +63,14 @@ public:
   /// from the centre line's envelope and still be on the fillet. Default 0.05.
   vtkSetClampMacro(RadiusTolerance, double, 1e-4, 1.0);
   vtkGetMacro(RadiusTolerance, double);
+  ///@}
+
+  ///@{
+  /// How far (as a fraction of the local radius) a surface vertex may lie
+  /// from the refined centre line's envelope and still be on a fillet face.
+  /// Default 0.02.
+  vtkSetClampMacro(FaceTolerance, double, 1e-4, 1.0);
+  vtkGetMacro(FaceTolerance, double);
   ///@}
 
   ///@{
@@ -111,6 +124,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double RadiusTolerance = 0.05;
+  double FaceTolerance = 0.02;
   double NormalTolerance = 30.0;
   double MinimumConsistentFraction = 0.5;
   double MinimumArcAngle = 20.0;

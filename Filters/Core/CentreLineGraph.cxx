@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <utility>
@@ -51,6 +52,59 @@ std::vector<Edge> Keep(const std::vector<Edge>& edges, const std::vector<std::ui
     }
   }
   return kept;
+}
+
+// Snaps the graph to a scale of `radii` ball radii: vertices are taken by
+// decreasing degree, then id, each unclaimed one claims the unclaimed vertices within that
+// distance, and edges are mapped to the claiming vertices. Fins running side
+// by side along a line collapse into one path; cluster diameters stay
+// bounded (no chaining along the line).
+std::vector<Edge> SnapToScale(const std::vector<Edge>& edges, const Geometry& g, double radii)
+{
+  std::vector<Index> used;
+  for (const Edge& e : edges)
+  {
+    used.push_back(e[0]);
+    used.push_back(e[1]);
+  }
+  std::sort(used.begin(), used.end());
+  std::vector<std::size_t> degree(g.Centres.size(), 0);
+  for (Index v : used)
+  {
+    ++degree[v];
+  }
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  // Junctions first: they become the vertices the others snap to.
+  std::stable_sort(
+    used.begin(), used.end(), [&](Index a, Index b) { return degree[a] > degree[b]; });
+  std::vector<Index> owner(g.Centres.size(), -1);
+  for (Index v : used)
+  {
+    if (owner[v] >= 0)
+    {
+      continue;
+    }
+    const double reach = radii * g.Radii[v];
+    for (Index w : used)
+    {
+      if (owner[w] < 0 && Norm(g.Centres[w] - g.Centres[v]) <= reach)
+      {
+        owner[w] = v;
+      }
+    }
+  }
+  std::vector<Edge> snapped;
+  for (const Edge& e : edges)
+  {
+    const Index a = owner[e[0]], b = owner[e[1]];
+    if (a != b)
+    {
+      snapped.push_back({ std::min(a, b), std::max(a, b) });
+    }
+  }
+  std::sort(snapped.begin(), snapped.end());
+  snapped.erase(std::unique(snapped.begin(), snapped.end()), snapped.end());
+  return snapped;
 }
 
 // A spanning forest by increasing length; every other edge closes a cycle,
@@ -139,14 +193,16 @@ Walk WalkFrom(Index v, const std::vector<Edge>& edges,
 }
 
 // Branches from a free end to a junction shorter than `radii` radii of the
-// junction's ball. Repeated: removing a spur can expose another.
+// junction's ball, removed one at a time, shortest first: once a junction
+// has lost its shortest branch, its other branches join into one line and
+// are no spurs any more (a short fillet is not eaten from its ends).
 std::vector<Edge> PruneSpurs(std::vector<Edge> edges, const Geometry& g, double radii)
 {
-  for (int round = 0; round < 8; ++round)
+  while (true)
   {
     const auto incident = Incidence(edges, g.Centres.size());
-    std::vector<std::uint8_t> removed(edges.size(), 0);
-    bool changed = false;
+    std::vector<Index> shortest;
+    double shortestLength = std::numeric_limits<double>::infinity();
     for (std::size_t v = 0; v < incident.size(); ++v)
     {
       if (incident[v].size() != 1)
@@ -155,22 +211,64 @@ std::vector<Edge> PruneSpurs(std::vector<Edge> edges, const Geometry& g, double 
       }
       const Walk walk =
         WalkFrom(static_cast<Index>(v), edges, incident, g, std::numeric_limits<double>::max());
-      if (incident[walk.End].size() >= 3 && walk.Length < radii * g.Radii[walk.End])
+      if (incident[walk.End].size() >= 3 && walk.Length < radii * g.Radii[walk.End] &&
+        walk.Length < shortestLength)
       {
-        for (Index e : walk.Edges)
-        {
-          changed = changed || !removed[e];
-          removed[e] = 1;
-        }
+        shortest = walk.Edges;
+        shortestLength = walk.Length;
       }
     }
-    if (!changed)
+    if (shortest.empty())
     {
-      break;
+      return edges;
+    }
+    std::vector<std::uint8_t> removed(edges.size(), 0);
+    for (Index e : shortest)
+    {
+      removed[e] = 1;
     }
     edges = Keep(edges, removed);
   }
-  return edges;
+}
+
+// Whether w is reachable from u along edges within `limit` (Dijkstra,
+// cut at the limit).
+bool WithinGraphDistance(Index u, Index w, double limit, const std::vector<Edge>& edges,
+  const std::vector<std::vector<Index>>& incident, const Geometry& g)
+{
+  std::vector<std::pair<double, Index>> heap{ { 0.0, u } };
+  std::vector<std::pair<Index, double>> settled;
+  auto known = [&](Index v)
+  {
+    return std::find_if(settled.begin(), settled.end(),
+             [v](const auto& s) { return s.first == v; }) != settled.end();
+  };
+  while (!heap.empty())
+  {
+    std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+    const auto [distance, v] = heap.back();
+    heap.pop_back();
+    if (known(v))
+    {
+      continue;
+    }
+    if (v == w)
+    {
+      return true;
+    }
+    settled.push_back({ v, distance });
+    for (Index e : incident[v])
+    {
+      const Index next = Other(edges[e], v);
+      const double d = distance + g.Length(edges[e]);
+      if (d <= limit && !known(next))
+      {
+        heap.push_back({ d, next });
+        std::push_heap(heap.begin(), heap.end(), std::greater<>());
+      }
+    }
+  }
+  return false;
 }
 
 // Joins each free end to the nearest vertex ahead of it, within `radii` of
@@ -211,8 +309,9 @@ std::vector<Edge> BridgeGaps(
       {
         continue;
       }
-      // Within its own line only the other free end (closing a loop).
-      if (component.Find(w) == component.Find(u) && incident[w].size() != 1)
+      // Within its own line only a vertex far along it (closing a loop).
+      if (component.Find(w) == component.Find(u) &&
+        WithinGraphDistance(u, w, options.SmallCycleRadii * r, edges, incident, g))
       {
         continue;
       }
@@ -416,9 +515,15 @@ std::vector<CentreLine> TraceCentreLines(const std::vector<std::array<Index, 2>>
   const CentreLineGraphOptions& options)
 {
   const Geometry g{ centres, radii };
-  std::vector<Edge> cleaned = OpenSmallCycles(edges, g, options.SmallCycleRadii);
-  cleaned = PruneSpurs(std::move(cleaned), g, options.SpurRadii);
-  cleaned = BridgeGaps(std::move(cleaned), g, options);
+  // Twice: opening cycles and pruning spurs frees ends that can then be
+  // bridged, and bridges can close new small cycles.
+  std::vector<Edge> cleaned = SnapToScale(edges, g, options.SnapRadii);
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    cleaned = OpenSmallCycles(cleaned, g, options.SmallCycleRadii);
+    cleaned = PruneSpurs(std::move(cleaned), g, options.SpurRadii);
+    cleaned = BridgeGaps(std::move(cleaned), g, options);
+  }
   cleaned = OpenSmallCycles(cleaned, g, options.SmallCycleRadii);
   cleaned = PruneSpurs(std::move(cleaned), g, options.SpurRadii);
   std::vector<CentreLine> lines;

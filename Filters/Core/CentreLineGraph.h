@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Clean polylines from a noisy set of medial edges that trace curves (e.g.
-// fillet centre lines): small cycles opened, short spurs pruned, small gaps
-// bridged, then chained and split at junctions and sharp turns.
+// fillet centre lines): snapped to a fraction of the ball radius, small
+// cycles opened, short spurs pruned, small gaps bridged, then chained and
+// split at junctions and sharp turns.
 //
 // Written by hand: the graph is small (edges along curves), and the
 // cleaning rules are scaled by the ball radius at each vertex, which no
@@ -24,6 +25,9 @@ struct CentreLine
 
 struct CentreLineGraphOptions
 {
+  /// Vertices closer than this many ball radii are snapped together first
+  /// (fins side by side along one line become one path).
+  double SnapRadii = 0.25;
   /// Cycles shorter than this many ball radii are noise (fins side by side).
   double SmallCycleRadii = 4.0;
   /// Branches from a free end to a junction shorter than this many radii

@@ -2,6 +2,7 @@
 #include "FilletDetector.h"
 
 #include "CentreLineGraph.h"
+#include "CircleFit.h"
 #include "MedialPrimitives.h"
 #include "TriangleAdjacency.h"
 #include "Vec3.h"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -100,10 +102,11 @@ struct EnvelopePiece
 class CentreLineEnvelope
 {
 public:
+  /// `reach` bounds the tolerances Matches will be asked for.
   CentreLineEnvelope(const std::vector<Point3>& centres, const std::vector<double>& radii,
-    bool closed, const FilletDetectorOptions& options)
-    : Tolerance(options.RadiusTolerance)
-    , CosNormal(std::cos(options.NormalTolerance))
+    bool closed, double reach, double cosNormal)
+    : Reach(reach)
+    , CosNormal(cosNormal)
   {
     const std::size_t n = centres.size();
     const std::size_t segments = closed ? n : n - 1;
@@ -114,19 +117,30 @@ public:
     }
     if (!closed)
     {
-      // The ball rolls on up to one radius past the last centre where it
-      // still touches both faces: e.g. to a sharp cap edge across the fillet.
+      // The ball rolls on up to one radius past the true end of the line,
+      // which the medial line may fall short of by about another radius:
+      // e.g. to a sharp cap edge across the fillet. Past that there is no
+      // surface with the normals of the envelope.
       for (int end = 0; end < 2; ++end)
       {
-        const std::size_t last = end ? n - 1 : 0, previous = end ? n - 2 : 1;
+        // Heading over about one radius: the last medial edges may zig-zag.
+        const std::size_t last = end ? n - 1 : 0;
+        std::size_t previous = end ? n - 2 : 1;
+        while (Norm(centres[last] - centres[previous]) < radii[last] &&
+          (end ? previous > 0 : previous + 1 < n))
+        {
+          previous = end ? previous - 1 : previous + 1;
+        }
         const Point3 direction = Normalized(centres[last] - centres[previous]);
-        this->Add(centres[last], radii[last], centres[last] + radii[last] * direction, radii[last]);
+        this->Add(
+          centres[last], radii[last], centres[last] + 2.0 * radii[last] * direction, radii[last]);
       }
     }
   }
 
-  // Whether p lies on the envelope with the surface normal `normal`.
-  bool Matches(const Point3& p, const Point3& normal) const
+  // Whether p lies on the envelope, within `tolerance` times the local
+  // radius, with the surface normal `normal`.
+  bool Matches(const Point3& p, const Point3& normal, double tolerance) const
   {
     for (const EnvelopePiece& piece : this->Pieces)
     {
@@ -140,8 +154,7 @@ public:
         cone.Length > 0.0 ? std::clamp(Dot(p - cone.C[0], cone.Axis) / cone.Length, 0.0, 1.0) : 0.0;
       const double radius = (1.0 - t) * cone.R[0] + t * cone.R[1];
       const PrimitiveDistance d = ConeDistance(cone, p);
-      if (std::abs(d.Distance) <= this->Tolerance * radius &&
-        Dot(d.Normal, normal) >= this->CosNormal)
+      if (std::abs(d.Distance) <= tolerance * radius && Dot(d.Normal, normal) >= this->CosNormal)
       {
         return true;
       }
@@ -154,7 +167,7 @@ private:
   {
     EnvelopePiece piece;
     piece.Cone = MakeCone(c0, r0, c1, r1);
-    const double reach = std::max(r0, r1) * (1.0 + this->Tolerance);
+    const double reach = std::max(r0, r1) * (1.0 + this->Reach);
     for (int k = 0; k < 3; ++k)
     {
       piece.Lo[k] = std::min(c0[k], c1[k]) - reach;
@@ -164,9 +177,180 @@ private:
   }
 
   std::vector<EnvelopePiece> Pieces;
-  double Tolerance;
+  double Reach;
   double CosNormal;
 };
+
+// Moves each centre-line vertex to the centre of the circle fitted to the
+// fillet's cross-section there (the surface points nearest to it, projected
+// on the plane across the line), and takes that circle's radius.
+// With `fromLine`, each point is measured from its closest point on the
+// current line instead of from the vertex: on a curved line, sections then
+// do not smear, provided the line is already close to the true one.
+void RefineCentreLine(
+  Fillet& fillet, const std::vector<Point3>& points, double inlier, bool fromLine)
+{
+  const std::size_t n = fillet.Centres.size();
+  const std::size_t segments = fillet.Closed ? n : n - 1;
+  std::vector<Point3> centres = fillet.Centres;
+  std::vector<std::uint8_t> fitted(n, 0);
+  // Each point goes to the vertex nearest to its closest point on the line.
+  std::vector<std::vector<Point3>> nearest(n);
+  for (const Point3& p : points)
+  {
+    std::size_t bestVertex = 0;
+    Point3 foot = centres[0];
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < segments; ++i)
+    {
+      const Point3 &a = centres[i], &b = centres[(i + 1) % n];
+      const Point3 ab = b - a;
+      const double length2 = Dot(ab, ab);
+      const double u = length2 > 0.0 ? std::clamp(Dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+      const Point3 q = a + u * ab;
+      const double d = Norm(p - q);
+      if (d < best)
+      {
+        best = d;
+        foot = q;
+        bestVertex = u < 0.5 ? i : (i + 1) % n;
+      }
+    }
+    // Stored relative to the vertex, or to the foot moved to the vertex.
+    nearest[bestVertex].push_back(fromLine ? centres[bestVertex] + (p - foot) : p);
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    // Tangent over about one radius on each side: short medial edges zig-zag.
+    std::size_t previous = i, next = i;
+    for (std::size_t k = 1; k < n; ++k)
+    {
+      if (!fillet.Closed && k > i)
+      {
+        break;
+      }
+      previous = (i + n - k) % n;
+      if (Norm(centres[previous] - centres[i]) >= fillet.Radii[i])
+      {
+        break;
+      }
+    }
+    for (std::size_t k = 1; k < n; ++k)
+    {
+      if (!fillet.Closed && i + k >= n)
+      {
+        break;
+      }
+      next = (i + k) % n;
+      if (Norm(centres[next] - centres[i]) >= fillet.Radii[i])
+      {
+        break;
+      }
+    }
+    const Point3 tangent = Normalized(centres[next] - centres[previous]);
+    if (nearest[i].size() < 6 || Norm(tangent) == 0.0)
+    {
+      continue;
+    }
+    // A frame across the line.
+    const Point3 helper = std::abs(tangent[0]) < 0.9 ? Point3{ 1, 0, 0 } : Point3{ 0, 1, 0 };
+    const Point3 e1 = Normalized(Cross(tangent, helper)), e2 = Cross(tangent, e1);
+    std::vector<std::array<double, 2>> section;
+    for (const Point3& p : nearest[i])
+    {
+      // A thin slice across the line: farther along it, the curvature of the
+      // line and any error of the tangent would smear the section.
+      const Point3 d = p - centres[i];
+      if (std::abs(Dot(d, tangent)) <= 0.25 * fillet.Radii[i])
+      {
+        section.push_back({ Dot(d, e1), Dot(d, e2) });
+      }
+    }
+    const FittedCircle circle = FitCircleRobust(section, inlier);
+    const double r = fillet.Radii[i];
+    // Junctions (corner balls, several fillets) have no single section.
+    if (circle.Valid && circle.InlierFraction >= 0.5 && std::hypot(circle.X, circle.Y) < 0.5 * r &&
+      std::abs(circle.Radius - r) < 0.5 * r)
+    {
+      fillet.Centres[i] = centres[i] + circle.X * e1 + circle.Y * e2;
+      fillet.Radii[i] = circle.Radius;
+      fitted[i] = 1;
+    }
+  }
+  // A fit whose radius stands out from its neighbours' (an odd section, e.g.
+  // where fins cross the line) does not count.
+  std::vector<std::uint8_t> trusted = fitted;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    std::vector<double> window;
+    for (long k = -2; k <= 2; ++k)
+    {
+      const long j = static_cast<long>(i) + k;
+      const std::size_t w = fillet.Closed
+        ? static_cast<std::size_t>((j + 2 * static_cast<long>(n)) % static_cast<long>(n))
+        : static_cast<std::size_t>(j);
+      if ((fillet.Closed || (j >= 0 && j < static_cast<long>(n))) && fitted[w])
+      {
+        window.push_back(fillet.Radii[w]);
+      }
+    }
+    if (fitted[i] && window.size() >= 3)
+    {
+      std::nth_element(window.begin(), window.begin() + window.size() / 2, window.end());
+      const double median = window[window.size() / 2];
+      trusted[i] = std::abs(fillet.Radii[i] - median) <= 4.0 * inlier * median;
+    }
+  }
+  // Vertices without a trusted fit take the displacement and radius of the
+  // trusted ones on both sides, weighted by distance along the line.
+  std::vector<Point3> offset(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    offset[i] = fillet.Centres[i] - centres[i];
+  }
+  const std::vector<double> radii = fillet.Radii;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (trusted[i])
+    {
+      continue;
+    }
+    long before = -1, after = -1;
+    double toBefore = 0.0, toAfter = 0.0;
+    for (std::size_t k = 1; k < n && before < 0; ++k)
+    {
+      if (!fillet.Closed && k > i)
+      {
+        break;
+      }
+      const std::size_t j = (i + n - k) % n;
+      toBefore += Norm(centres[(j + 1) % n] - centres[j]);
+      before = trusted[j] ? static_cast<long>(j) : -1;
+    }
+    for (std::size_t k = 1; k < n && after < 0; ++k)
+    {
+      if (!fillet.Closed && i + k >= n)
+      {
+        break;
+      }
+      const std::size_t j = (i + k) % n;
+      toAfter += Norm(centres[j] - centres[(j + n - 1) % n]);
+      after = trusted[j] ? static_cast<long>(j) : -1;
+    }
+    if (before < 0 && after < 0)
+    {
+      fillet.Centres[i] = centres[i];
+      continue;
+    }
+    const double w = before < 0 ? 1.0 : (after < 0 ? 0.0 : toBefore / (toBefore + toAfter));
+    const std::size_t b =
+      before < 0 ? static_cast<std::size_t>(after) : static_cast<std::size_t>(before);
+    const std::size_t a =
+      after < 0 ? static_cast<std::size_t>(before) : static_cast<std::size_t>(after);
+    fillet.Centres[i] = centres[i] + (1.0 - w) * offset[b] + w * offset[a];
+    fillet.Radii[i] = (1.0 - w) * radii[b] + w * radii[a];
+  }
+}
 
 // Medial edges on exactly one medial triangle, sorted.
 std::vector<std::array<Index, 2>> BoundaryEdges(const MedialMesh& medial)
@@ -275,24 +459,20 @@ EdgeVerdict JudgeEdge(Index a, Index b, const MedialMesh& medial,
                                                           : EdgeVerdict::Rejected;
 }
 
-void Measure(Fillet& chain, const MedialMesh& medial)
+void Measure(Fillet& chain)
 {
-  const std::size_t n = chain.Vertices.size();
+  const std::size_t n = chain.Centres.size();
   const std::size_t segments = chain.Closed ? n : n - 1;
   double weighted = 0.0;
-  chain.MinimumRadius = std::numeric_limits<double>::infinity();
-  chain.MaximumRadius = 0.0;
-  for (Index v : chain.Vertices)
-  {
-    chain.MinimumRadius = std::min(chain.MinimumRadius, medial.Radii[v]);
-    chain.MaximumRadius = std::max(chain.MaximumRadius, medial.Radii[v]);
-  }
+  chain.Length = 0.0;
+  chain.MinimumRadius = *std::min_element(chain.Radii.begin(), chain.Radii.end());
+  chain.MaximumRadius = *std::max_element(chain.Radii.begin(), chain.Radii.end());
   for (std::size_t i = 0; i < segments; ++i)
   {
-    const Index a = chain.Vertices[i], b = chain.Vertices[(i + 1) % n];
-    const double length = Norm(medial.Centers[b] - medial.Centers[a]);
+    const std::size_t j = (i + 1) % n;
+    const double length = Norm(chain.Centres[j] - chain.Centres[i]);
     chain.Length += length;
-    weighted += 0.5 * length * (medial.Radii[a] + medial.Radii[b]);
+    weighted += 0.5 * length * (chain.Radii[i] + chain.Radii[j]);
   }
   chain.MeanRadius = chain.Length > 0.0 ? weighted / chain.Length : chain.MaximumRadius;
   chain.RadiusVariation =
@@ -418,65 +598,47 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
     Fillet chain;
     chain.Vertices = line.Vertices;
     chain.Closed = line.Closed;
-    Measure(chain, medial);
+    for (Index v : chain.Vertices)
+    {
+      chain.Centres.push_back(medial.Centers[v]);
+      chain.Radii.push_back(medial.Radii[v]);
+    }
+    Measure(chain);
     if (chain.Length >= options.MinimumLength * result.Diagonal)
     {
       result.Fillets.push_back(std::move(chain));
     }
   }
 
-  // 3. Fillet faces: grown from the Atlas triangles of each centre line over
-  // neighbouring triangles whose corners and centroid lie on its envelope.
-  // A triangle claimed by an earlier fillet (where fillets meet at a corner
-  // ball) keeps that fillet.
+  // 3. Fillet faces, grown over the surface from the Atlas triangles of each
+  // centre line through neighbouring triangles on its envelope: first
+  // loosely, to refine the line by circle fits to the faces found, then
+  // tightly along the refined line. A triangle claimed by an earlier fillet
+  // (where fillets meet at a corner ball) keeps that fillet.
   const TriangleAdjacency adjacency = ComputeTriangleAdjacency(surface, 0.0);
-  std::vector<int> tested(surface.Triangles.size(), -1);
-  for (std::size_t f = 0; f < result.Fillets.size(); ++f)
+  std::vector<int> stamp(surface.Triangles.size(), -1);
+  int stamps = 0;
+  auto grow = [&](const std::vector<Index>& seeds, const std::function<bool(Index)>& accept)
   {
-    Fillet& fillet = result.Fillets[f];
-    std::vector<Point3> centres;
-    std::vector<double> radii;
-    for (Index v : fillet.Vertices)
-    {
-      centres.push_back(medial.Centers[v]);
-      radii.push_back(medial.Radii[v]);
-    }
-    const CentreLineEnvelope envelope(centres, radii, fillet.Closed, options);
-    auto onFillet = [&](Index t)
-    {
-      const Triangle& tri = surface.Triangles[t];
-      const Point3& normal = triangles[t].Normal;
-      return envelope.Matches(triangles[t].Centroid, normal) &&
-        envelope.Matches(surface.Points[tri[0]], normal) &&
-        envelope.Matches(surface.Points[tri[1]], normal) &&
-        envelope.Matches(surface.Points[tri[2]], normal);
-    };
+    const int mark = stamps++;
+    std::vector<Index> region;
     std::deque<Index> front;
     auto visit = [&](Index t)
     {
-      if (tested[t] == static_cast<int>(f) || result.TriangleFillet[t] >= 0)
+      if (stamp[t] == mark || result.TriangleFillet[t] >= 0)
       {
         return;
       }
-      tested[t] = static_cast<int>(f);
-      if (onFillet(t))
+      stamp[t] = mark;
+      if (accept(t))
       {
-        result.TriangleFillet[t] = static_cast<int>(f);
-        ++fillet.SurfaceTriangles;
-        fillet.SurfaceArea += triangles[t].Area;
+        region.push_back(t);
         front.push_back(t);
       }
     };
-    for (Index v : fillet.Vertices)
+    for (Index t : seeds)
     {
-      for (Index k = atlasOffsets[v]; k < atlasOffsets[v + 1]; ++k)
-      {
-        const Index site = atlasSites[k];
-        for (Index i = siteTriangles.Offsets[site]; i < siteTriangles.Offsets[site + 1]; ++i)
-        {
-          visit(siteTriangles.Items[i]);
-        }
-      }
+      visit(t);
     }
     while (!front.empty())
     {
@@ -489,6 +651,70 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
           visit(neighbour);
         }
       }
+    }
+    return region;
+  };
+  const double reach = std::max(options.RadiusTolerance, options.FaceTolerance);
+  for (std::size_t f = 0; f < result.Fillets.size(); ++f)
+  {
+    Fillet& fillet = result.Fillets[f];
+    std::vector<Index> seeds;
+    for (Index v : fillet.Vertices)
+    {
+      for (Index k = atlasOffsets[v]; k < atlasOffsets[v + 1]; ++k)
+      {
+        const Index site = atlasSites[k];
+        seeds.insert(seeds.end(), siteTriangles.Items.begin() + siteTriangles.Offsets[site],
+          siteTriangles.Items.begin() + siteTriangles.Offsets[site + 1]);
+      }
+    }
+    std::sort(seeds.begin(), seeds.end());
+    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+
+    const CentreLineEnvelope loose(fillet.Centres, fillet.Radii, fillet.Closed, reach, cosNormal);
+    const std::vector<Index> found = grow(seeds,
+      [&](Index t)
+      {
+        const Triangle& tri = surface.Triangles[t];
+        const Point3& n = triangles[t].Normal;
+        const double tol = options.RadiusTolerance;
+        return loose.Matches(triangles[t].Centroid, n, tol) &&
+          loose.Matches(surface.Points[tri[0]], n, tol) &&
+          loose.Matches(surface.Points[tri[1]], n, tol) &&
+          loose.Matches(surface.Points[tri[2]], n, tol);
+      });
+    std::vector<Index> cornerIds;
+    for (Index t : found)
+    {
+      cornerIds.insert(cornerIds.end(), surface.Triangles[t].begin(), surface.Triangles[t].end());
+    }
+    std::sort(cornerIds.begin(), cornerIds.end());
+    cornerIds.erase(std::unique(cornerIds.begin(), cornerIds.end()), cornerIds.end());
+    std::vector<Point3> corners;
+    for (Index v : cornerIds)
+    {
+      corners.push_back(surface.Points[v]);
+    }
+    RefineCentreLine(fillet, corners, 0.25 * options.FaceTolerance, false);
+    RefineCentreLine(fillet, corners, 0.25 * options.FaceTolerance, true);
+    Measure(fillet);
+
+    const CentreLineEnvelope tight(fillet.Centres, fillet.Radii, fillet.Closed, reach, cosNormal);
+    seeds.insert(seeds.end(), found.begin(), found.end());
+    for (Index t : grow(seeds,
+           [&](Index t)
+           {
+             const Triangle& tri = surface.Triangles[t];
+             const Point3& n = triangles[t].Normal;
+             return tight.Matches(triangles[t].Centroid, n, options.RadiusTolerance) &&
+               tight.Matches(surface.Points[tri[0]], n, options.FaceTolerance) &&
+               tight.Matches(surface.Points[tri[1]], n, options.FaceTolerance) &&
+               tight.Matches(surface.Points[tri[2]], n, options.FaceTolerance);
+           }))
+    {
+      result.TriangleFillet[t] = static_cast<int>(f);
+      ++fillet.SurfaceTriangles;
+      fillet.SurfaceArea += triangles[t].Area;
     }
   }
   return result;

@@ -11,7 +11,9 @@
 // the cone of interpolated balls, with matching normals. Accepted edges are
 // chained into polylines; each polyline's fillet faces are grown over the
 // surface from its Atlas triangles, through triangles whose corners all lie
-// on the polyline's envelope.
+// on the polyline's envelope. The polyline is then refined, vertex by vertex,
+// by a circle fit to the fillet's cross-section, and the faces grown again
+// with a tighter tolerance.
 #ifndef medialaxis_FilletDetector_h
 #define medialaxis_FilletDetector_h
 
@@ -31,6 +33,11 @@ struct FilletDetectorOptions
   /// Largest angle (radians) between a fillet triangle's normal and the
   /// envelope's normal at its closest point.
   double NormalTolerance = 0.5235987755982988; // 30 degrees
+  /// A surface vertex belongs to a fillet's faces when its distance to the
+  /// refined centre line's envelope is within this fraction of the radius
+  /// (triangle centroids, off the curved surface by the chord, use
+  /// RadiusTolerance).
+  double FaceTolerance = 0.02;
   /// Fraction of an edge's corresponding surface (by area, within the edge's
   /// span) that must lie on its envelope for the edge to be a centre-line edge.
   double MinimumConsistentFraction = 0.5;
@@ -52,6 +59,10 @@ struct Fillet
   /// Medial vertex ids along the centre line; a closed one (Closed) does not
   /// repeat its first vertex.
   std::vector<Index> Vertices;
+  /// The rolling ball along the line, per vertex: the medial vertex's sphere
+  /// refined by a circle fit to the fillet's cross-section there.
+  std::vector<Point3> Centres;
+  std::vector<double> Radii;
   bool Closed = false;
   double Length = 0.0;
   double MeanRadius = 0.0; // length-weighted

@@ -13,7 +13,9 @@
 #include "vtkCellData.h"
 #include "vtkFilletDetector.h"
 #include "vtkLogger.h"
+#include "vtkMedialMeshConversion.h"
 #include "vtkPointData.h"
+#include "vtkXMLPolyDataWriter.h"
 
 #include <gtest/gtest.h>
 
@@ -158,11 +160,7 @@ TEST_P(RoundedBoxFillets, TwelveCentreLinesWithTheirRadius)
   EXPECT_GE(score.Recall, 0.95);
 }
 
-INSTANTIATE_TEST_SUITE_P(FilletDetector, RoundedBoxFillets, ::testing::Values(0.1));
-// Measured with radius 0.25 (fringe collapses on): 12 centre lines, mean radii
-// within 1%, but precision 0.92 (a row of flat triangles beside each fillet
-// lies within 5% of the envelope) and recall 0.97.
-INSTANTIATE_TEST_SUITE_P(DISABLED_LargeFillets, RoundedBoxFillets, ::testing::Values(0.25));
+INSTANTIATE_TEST_SUITE_P(FilletDetector, RoundedBoxFillets, ::testing::Values(0.1, 0.25));
 
 // The generated parts are closed, manifold and outward with their fillet
 // faces labelled.
@@ -208,18 +206,9 @@ std::vector<int> MatchFillets(const Detection& d, const std::vector<int>& truth,
   return match;
 }
 
-// Disabled until they pass. Measured at 50K sites -> 2,000 vertices with
-// fringe collapses: the prism gives 2 fillets but only half of each edge
-// (precision 0.91, recall 0.46: parallel fins along the edges leave the
-// centre-line graph in pieces); the cylinder rim one closed fillet with the
-// right radius (precision 0.82: a row of side and cap triangles beside the
-// fillet lies within 5% of its envelope); the variable-radius edge one
-// fillet (precision 0.91, recall 0.83, radius off by more than 5% near the
-// caps).
-
 // Two of the four vertical edges rounded (radius 0.25), the others and the
 // caps sharp: exactly the two fillets, each along its whole edge.
-TEST(FilletDetector, DISABLED_OnlyTheRoundedEdgesOfAPrism)
+TEST(FilletDetector, OnlyTheRoundedEdgesOfAPrism)
 {
   const double rho = 0.25;
   const LabelledTriangleMesh part =
@@ -251,7 +240,7 @@ TEST(FilletDetector, DISABLED_OnlyTheRoundedEdgesOfAPrism)
 
 // A circular fillet: the rounded top rim of a cylinder is one closed centre
 // line, the circle of radius R - rho at height h/2 - rho.
-TEST(FilletDetector, DISABLED_CylinderRimIsOneCircularFillet)
+TEST(FilletDetector, CylinderRimIsOneCircularFillet)
 {
   const double radius = 1.0, height = 1.5, rho = 0.2;
   const LabelledTriangleMesh part = MakeRoundedCylinder(radius, height, rho, 0.0, 8);
@@ -272,6 +261,12 @@ TEST(FilletDetector, DISABLED_CylinderRimIsOneCircularFillet)
   EXPECT_GE(score.Precision, 0.95);
   EXPECT_GE(score.Recall, 0.95);
 }
+
+// Disabled until it passes. Measured at 50K sites -> 2,000 vertices with
+// fringe collapses: one fillet, precision 0.98, recall 0.70. The generated
+// fillet is made of horizontal circular arcs, which is not exactly the
+// envelope of a rolling ball of varying radius (about 1% apart at this slope),
+// and the face test allows 2% at surface vertices.
 
 // One edge rounded with a radius growing linearly from 0.15 at the bottom to
 // 0.35 at the top: found as one fillet following the radius profile.

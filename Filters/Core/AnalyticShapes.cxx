@@ -503,11 +503,35 @@ LabelledTriangleMesh MakeFilletedPrism(const Point3& sides,
       const double sx = cornerX[k] > 0 ? 1.0 : -1.0, sy = cornerY[k] > 0 ? 1.0 : -1.0;
       if (r > 0.0)
       {
-        const double cx = cornerX[k] - sx * r, cy = cornerY[k] - sy * r;
+        // The section at height z of the envelope of the rolling ball whose
+        // centre c(h) = corner - r(h) (sx, sy) and radius r(h) vary linearly
+        // with its height h. A ball touches the envelope along the circle of
+        // unit normals n with n . u = alpha = -r' / |c'| (u the unit tangent
+        // of the centre line); the fillet is the arc of it from the contact
+        // normal of one face to the other's, and normal n meets height z on
+        // the ball whose h solves h + r(h) n_z = z. Constant radius: a
+        // horizontal quarter circle.
+        const double slope = (topRadii[k] - bottomRadii[k]) / height;
+        const Point3 u = Normalized(Point3{ -sx * slope, -sy * slope, 1.0 });
+        const double alpha = -slope / std::sqrt(1.0 + 2.0 * slope * slope);
+        const double from = 0.5 * Pi * k, to = 0.5 * Pi * (k + 1);
+        const Point3 first{ std::cos(from), std::sin(from), 0.0 },
+          last{ std::cos(to), std::sin(to), 0.0 };
+        const Point3 e1 = Normalized(first - alpha * u);
+        const Point3 lastAcross = last - alpha * u;
+        const Point3 e2 = Normalized(lastAcross - Dot(lastAcross, e1) * e1);
+        const double sweep = std::atan2(Dot(lastAcross, e2), Dot(lastAcross, e1));
+        const double beta = std::sqrt(1.0 - alpha * alpha);
+        const double bottom = -0.5 * height;
         for (int i = 0; i <= resolution; ++i)
         {
-          const double angle = 0.5 * Pi * (k + double(i) / resolution);
-          profile.push_back({ cx + r * std::cos(angle), cy + r * std::sin(angle), z });
+          const double phi = sweep * i / resolution;
+          const Point3 n = alpha * u + beta * (std::cos(phi) * e1 + std::sin(phi) * e2);
+          // h + (r0 + slope (h - bottom)) n_z = z
+          const double h = (z - (bottomRadii[k] - slope * bottom) * n[2]) / (1.0 + slope * n[2]);
+          const double rh = bottomRadii[k] + slope * (h - bottom);
+          profile.push_back(
+            { cornerX[k] - sx * rh + rh * n[0], cornerY[k] - sy * rh + rh * n[1], z });
           segmentLabel.push_back(i < resolution ? k : -1);
         }
       }

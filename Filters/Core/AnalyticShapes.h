@@ -49,7 +49,8 @@ struct LabelledTriangleMesh
 /// edges, numbered counter-clockwise from the (+x, +y) one, are rounded:
 /// edge k has radius bottomRadii[k] at the bottom cap varying linearly to
 /// topRadii[k] at the top (both 0: a sharp edge; different: a
-/// variable-radius fillet, each horizontal section a circular arc). FilletId
+/// variable-radius fillet, the exact envelope of a ball rolling between the
+/// two faces whose radius varies linearly with its centre's height). FilletId
 /// k labels edge k's fillet. `resolution` is the number of segments along each
 /// arc; the flat parts get about 2 * resolution segments along the longest side.
 LabelledTriangleMesh MakeFilletedPrism(const Point3& sides,

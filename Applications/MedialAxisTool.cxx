@@ -4,6 +4,7 @@
 #include "MedialMesh.h"
 #include "MedialMeshQuality.h"
 #include "vtkErrorEventText.h"
+#include "vtkFilletDetector.h"
 #include "vtkMedialAxisWriter.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkMedialReconstructionError.h"
@@ -12,6 +13,7 @@
 #include "vtkSurfaceFileReader.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -69,6 +71,11 @@ Options:
                         primitives (spheres, cones, slabs) as triangles
   --correspondence      also write correspondence.vtp: the surface cut into
                         the sites' cells with MedialVertexId per cell
+  --fillets             find the fillets (CAD parts: use --preset cad) and
+                        write fillets.vtp (one centre line per fillet, point
+                        data Radius) and fillet_faces.vtp (the surface with
+                        cell data FilletId, -1 off fillets); the report lists
+                        each fillet's radius and length
   --error               measure the two-sided Hausdorff distance between the
                         surface and the envelope (% of the bounding-box
                         diagonal) and write distance.vtp (the surface with
@@ -90,7 +97,8 @@ struct Options
   std::string Input, OutputDir, Report;
   vtkIdType Samples = -1, Target = -1;
   int Sharp = -1; // -1: from the preset
-  bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false;
+  bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
+       Fillets = false;
   double FeatureAngle = 45.0;
   int Seed = 0, Threads = 0;
 };
@@ -196,6 +204,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--correspondence")
     {
       o.Correspondence = true;
+    }
+    else if (arg == "--fillets")
+    {
+      o.Fillets = true;
     }
     else if (arg == "--error")
     {
@@ -440,6 +452,31 @@ int main(int argc, char** argv)
     WriteVtp(vtkPolyData::SafeDownCast(structural->GetOutputDataObject(3)), path);
     written.push_back(path);
   }
+  double filletSeconds = 0.0;
+  vtkNew<vtkFilletDetector> fillets;
+  if (o.Fillets)
+  {
+    fillets->SetInputData(0, mat);
+    fillets->SetInputData(1, vtkPolyData::SafeDownCast(structural->GetOutputDataObject(1)));
+    fillets->SetInputConnection(2, validator->GetOutputPort());
+    ProgressBar filletBar{ "fillets" };
+    LastError filletError;
+    Observe(fillets, filletError, showProgress ? &filletBar : nullptr);
+    const auto begin = std::chrono::steady_clock::now();
+    fillets->Update();
+    filletSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    if (!filletError.Message.empty())
+    {
+      std::cerr << "medial-axis: fillet detection failed: " << filletError.Message << "\n";
+      return ComputationFailed;
+    }
+    for (int port = 0; port < 2; ++port)
+    {
+      const std::string path = (dir / (port == 0 ? "fillets.vtp" : "fillet_faces.vtp")).string();
+      WriteVtp(fillets->GetOutput(port), path);
+      written.push_back(path);
+    }
+  }
   double hausdorff = -1.0, hausdorffPercent = -1.0, toEnvelope = -1.0, toSurface = -1.0;
   double errorSeconds = 0.0;
   if (o.Error)
@@ -483,6 +520,19 @@ int main(int argc, char** argv)
     std::cout << ", two-sided Hausdorff " << hausdorffPercent << "% of the diagonal";
   }
   std::cout << "\n";
+  vtkPolyData* filletLines = fillets->GetOutput(0);
+  if (o.Fillets)
+  {
+    vtkCellData* cells = filletLines->GetCellData();
+    std::cout << "  " << filletLines->GetNumberOfCells() << " fillets\n";
+    for (vtkIdType f = 0; f < filletLines->GetNumberOfCells(); ++f)
+    {
+      std::cout << "    fillet " << f << ": radius " << cells->GetArray("MeanRadius")->GetTuple1(f)
+                << " (from " << cells->GetArray("MinimumRadius")->GetTuple1(f) << " to "
+                << cells->GetArray("MaximumRadius")->GetTuple1(f) << "), length "
+                << cells->GetArray("Length")->GetTuple1(f) << "\n";
+    }
+  }
   for (const std::string& path : written)
   {
     std::cout << "  wrote " << path << "\n";
@@ -507,8 +557,9 @@ int main(int argc, char** argv)
            << FieldValue(mat, (std::string(stages[k]) + "Seconds").c_str());
     }
     json << ", \"QueueInitialisation\": " << FieldValue(mat, "QueueInitialisationSeconds")
-         << ", \"Envelope\": " << envelopeSeconds << ", \"Error\": " << errorSeconds
-         << ", \"wall\": " << seconds << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
+         << ", \"Envelope\": " << envelopeSeconds << ", \"Fillets\": " << filletSeconds
+         << ", \"Error\": " << errorSeconds << ", \"wall\": " << seconds
+         << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
          << ",\n  \"counts\": {\"sites\": " << FieldValue(mat, "Sites")
          << ", \"initial_vertices\": " << FieldValue(mat, "InitialVertices")
          << ", \"initial_triangles\": " << FieldValue(mat, "InitialTriangles")
@@ -524,6 +575,21 @@ int main(int argc, char** argv)
          << ", \"mean_min_angle_deg\": " << quality.MeanMinimumAngle
          << ", \"percent_min_angle_below_30\": " << quality.PercentMinimumAngleBelow30
          << ", \"mean_q\": " << quality.MeanQuality << "}";
+    if (o.Fillets)
+    {
+      vtkCellData* cells = filletLines->GetCellData();
+      json << ",\n  \"fillets\": [";
+      for (vtkIdType f = 0; f < filletLines->GetNumberOfCells(); ++f)
+      {
+        json << (f ? ",\n    " : "\n    ")
+             << "{\"mean_radius\": " << cells->GetArray("MeanRadius")->GetTuple1(f)
+             << ", \"minimum_radius\": " << cells->GetArray("MinimumRadius")->GetTuple1(f)
+             << ", \"maximum_radius\": " << cells->GetArray("MaximumRadius")->GetTuple1(f)
+             << ", \"length\": " << cells->GetArray("Length")->GetTuple1(f)
+             << ", \"surface_area\": " << cells->GetArray("SurfaceArea")->GetTuple1(f) << "}";
+      }
+      json << "]";
+    }
     if (o.Error)
     {
       json << ",\n  \"hausdorff\": {\"two_sided\": " << hausdorff

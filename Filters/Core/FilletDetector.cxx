@@ -717,6 +717,26 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
       fillet.SurfaceArea += triangles[t].Area;
     }
   }
+  // 4. A rolling ball leaves faces about as wide as its arc along the whole
+  // line; a line with much less (a sheet boundary near some curved face) is
+  // no fillet.
+  std::vector<int> renumber(result.Fillets.size(), -1);
+  std::vector<Fillet> kept;
+  for (std::size_t f = 0; f < result.Fillets.size(); ++f)
+  {
+    const Fillet& fillet = result.Fillets[f];
+    const double expected = fillet.Length * fillet.MeanRadius * options.MinimumArcAngle;
+    if (fillet.SurfaceArea >= 0.5 * expected)
+    {
+      renumber[f] = static_cast<int>(kept.size());
+      kept.push_back(fillet);
+    }
+  }
+  for (int& f : result.TriangleFillet)
+  {
+    f = f >= 0 ? renumber[f] : -1;
+  }
+  result.Fillets.swap(kept);
   return result;
 }
 }

@@ -47,7 +47,9 @@ struct FilletDetectorOptions
   /// Balls smaller than this fraction of the surface's bounding-box diagonal
   /// belong to sharp edges (radius 0), not to fillets.
   double MinimumRadius = 0.002;
-  /// Centre lines shorter than this fraction of the diagonal are dropped.
+  /// Centre lines shorter than this fraction of the diagonal are dropped, and
+  /// so are those whose faces cover less than half of Length * MeanRadius *
+  /// MinimumArcAngle (a rolling ball leaves at least that).
   double MinimumLength = 0.02;
   /// A centre line is split where it turns by more than this angle (radians)
   /// at a vertex, e.g. at the corner where two fillets of a box meet.

@@ -8,6 +8,8 @@ import unittest
 
 import vtk
 
+import medialaxis
+
 TOOL = os.environ["MEDIALAXIS_TOOL"]
 
 
@@ -87,6 +89,31 @@ class CommandLineTest(unittest.TestCase):
         # around it stays within a few percent of the diagonal.
         self.assertLess(data["hausdorff"]["two_sided_percent"], 5.0)
         self.assertGreater(data["hausdorff"]["two_sided_percent"], 0.0)
+
+    def test_fillets(self):
+        # A box with rounded edges (radius 0.1, side 2): 12 fillets, each a
+        # centre line of length 1.8 with radius 0.1.
+        box = vtk.vtkXMLPolyDataWriter()
+        source = medialaxis.vtkAnalyticShapeSource()
+        source.SetShapeToRoundedBox()
+        source.SetFilletRadius(0.1)
+        box.SetInputConnection(source.GetOutputPort())
+        box.SetFileName(self.path("box.vtp"))
+        self.assertEqual(box.Write(), 1)
+        out = self.path("out")
+        report = self.path("report.json")
+        result = run("--preset", "cad", "--fillets", "--report", report, self.path("box.vtp"), out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("12 fillets", result.stdout)
+        for name in ("fillets.vtp", "fillet_faces.vtp"):
+            self.assertTrue(os.path.getsize(os.path.join(out, name)) > 0, name)
+        with open(report) as f:
+            data = json.load(f)
+        self.assertEqual(len(data["fillets"]), 12)
+        for fillet in data["fillets"]:
+            self.assertAlmostEqual(fillet["mean_radius"], 0.1, delta=0.003)
+            self.assertAlmostEqual(fillet["length"], 1.8, delta=0.06)
+        self.assertGreater(data["seconds"]["Fillets"], 0.0)
 
 
 if __name__ == "__main__":

@@ -65,6 +65,9 @@ Options:
   --target N            spheres left after simplification (overrides the preset)
   --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not
   --feature-angle DEG   dihedral tolerance for sharp edges (default 45)
+  --fringe-collapses    let the simplifier break the link condition with
+                        collapses that keep the Euler characteristic: removes
+                        the fringe of thin fins along large fillets
   --seed S              sampler seed; same seed, same result (default 0)
   --threads T           threads for the parallel stages (0 = all, default)
   --envelope            also write envelope.vtp: the union of the medial
@@ -98,7 +101,7 @@ struct Options
   vtkIdType Samples = -1, Target = -1;
   int Sharp = -1; // -1: from the preset
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
-       Fillets = false;
+       Fillets = false, FringeCollapses = false;
   double FeatureAngle = 45.0;
   int Seed = 0, Threads = 0;
 };
@@ -204,6 +207,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--correspondence")
     {
       o.Correspondence = true;
+    }
+    else if (arg == "--fringe-collapses")
+    {
+      o.FringeCollapses = true;
     }
     else if (arg == "--fillets")
     {
@@ -408,6 +415,7 @@ int main(int argc, char** argv)
     structural->SetPreserveSharpFeatures(o.Sharp == 1);
   }
   structural->SetFeatureAngle(o.FeatureAngle);
+  structural->SetFringeCollapses(o.FringeCollapses);
   structural->SetRandomSeed(o.Seed);
   structural->SetNumberOfThreads(o.Threads);
   structural->SetGenerateEnvelope(o.Envelope);
@@ -547,8 +555,9 @@ int main(int argc, char** argv)
          << ", \"target\": " << structural->GetTargetNumberOfVertices()
          << ", \"preserve_sharp_features\": "
          << (structural->GetPreserveSharpFeatures() ? "true" : "false")
-         << ", \"feature_angle\": " << o.FeatureAngle << ", \"seed\": " << o.Seed
-         << ", \"threads\": " << o.Threads << "},\n  \"seconds\": {";
+         << ", \"feature_angle\": " << o.FeatureAngle
+         << ", \"fringe_collapses\": " << (o.FringeCollapses ? "true" : "false")
+         << ", \"seed\": " << o.Seed << ", \"threads\": " << o.Threads << "},\n  \"seconds\": {";
     const char* stages[] = { "Sampling", "RestrictedVoronoi", "VoronoiMedialAxis", "Simplification",
       "Total" };
     for (int k = 0; k < 5; ++k)
@@ -566,6 +575,8 @@ int main(int argc, char** argv)
          << ", \"vertices\": " << mesh.Centers.size()
          << ", \"edges\": " << medialaxis::AllEdges(mesh).size()
          << ", \"triangles\": " << mesh.Faces.size()
+         << ", \"boundary_edges\": " << quality.BoundaryEdges
+         << ", \"nonmanifold_edges\": " << quality.NonManifoldEdges
          << ", \"collapses\": " << FieldValue(mat, "Collapses") << "},\n"
          << "  \"valid\": " << (check.IsValid() ? "true" : "false")
          << ", \"validity_problem\": " << JsonString(check.Message) << ",\n"

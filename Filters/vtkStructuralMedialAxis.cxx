@@ -124,6 +124,7 @@ int vtkStructuralMedialAxis::RequestData(
   simplifier->SetInputConnection(1, rvd->GetOutputPort(0));
   simplifier->SetTargetNumberOfVertices(this->TargetNumberOfVertices);
   simplifier->SetPreserveSharpFeatures(this->PreserveSharpFeatures);
+  simplifier->SetFringeCollapses(this->FringeCollapses);
   simplifier->SetLambda(this->Lambda);
   simplifier->SetSpikeThreshold(this->SpikeThreshold);
 
@@ -221,6 +222,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "TargetNumberOfVertices: " << this->TargetNumberOfVertices << "\n";
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
+  os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "ConcaveFiltering: " << this->ConcaveFiltering << "\n";
   os << indent << "Lambda: " << this->Lambda << "\n";

@@ -87,6 +87,15 @@ public:
   ///@}
 
   ///@{
+  /// Let the simplifier break the link condition with collapses that keep
+  /// the Euler characteristic (see vtkAtlasMedialAxisSimplifier): removes the
+  /// fringe of thin fins along large fillets' centre lines (default off).
+  vtkSetMacro(FringeCollapses, bool);
+  vtkGetMacro(FringeCollapses, bool);
+  vtkBooleanMacro(FringeCollapses, bool);
+  ///@}
+
+  ///@{
   /// Laplacian weight of the collapse energy, in the model scaled to the
   /// unit box (default 6e-6, as in the paper).
   vtkSetClampMacro(Lambda, double, 0.0, 1.0);
@@ -126,6 +135,7 @@ protected:
   int RandomSeed = 0;
   vtkIdType TargetNumberOfVertices = 1000;
   bool PreserveSharpFeatures = false;
+  bool FringeCollapses = false;
   double FeatureAngle = 45.0;
   bool ConcaveFiltering = true;
   double Lambda = 6e-6;

@@ -80,6 +80,8 @@ MedialMeshQuality MeasureQuality(const MedialMesh& mesh)
     {
       ++j;
     }
+    quality.BoundaryEdges += j - i == 1 ? 1 : 0;
+    quality.NonManifoldEdges += j - i > 2 ? 1 : 0;
     if (j - i == 2)
     {
       const auto& [u, v, f, x] = halfEdges[i];

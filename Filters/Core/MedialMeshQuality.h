@@ -25,6 +25,10 @@ struct MedialMeshQuality
   /// triangles once each in FoldedTriangles.
   std::size_t FoldedEdges = 0;
   std::size_t FoldedTriangles = 0;
+  /// Triangle edges on one triangle (the boundary of the medial sheets) and
+  /// on three or more (seams where sheets meet, or fins).
+  std::size_t BoundaryEdges = 0;
+  std::size_t NonManifoldEdges = 0;
   /// Mean smallest angle (degrees) and the share of triangles whose smallest
   /// angle is below 30 degrees, over non-degenerate triangles.
   double MeanMinimumAngle = 0.0;

@@ -493,6 +493,56 @@ bool MedialEnvelope::StrictlyInside(
   return this->StrictlyInside(p, tolerance);
 }
 
+std::uint32_t MedialEnvelope::FindBurying(const Point3& p, double tolerance, const Index* vertices,
+  int count, std::uint32_t hint, std::size_t maxItems) const
+{
+  const double cutoff = -tolerance;
+  const Compact* records = this->Records.data();
+  auto buries = [&](std::uint32_t slot)
+  { return CompactValue(records[slot].D, records[slot].Kind, p) < cutoff; };
+  if (hint != NoBurial && buries(hint))
+  {
+    return hint;
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    for (std::uint32_t k = this->IncidentOffsets[vertices[i]];
+         k < this->IncidentOffsets[vertices[i] + 1]; ++k)
+    {
+      const std::uint32_t slot = this->Slot[this->Incident[k]];
+      if (buries(slot))
+      {
+        return slot;
+      }
+    }
+  }
+  std::uint32_t found = NoBurial;
+  if (this->Accelerate)
+  {
+    std::size_t evaluated = 0;
+    this->Tree.SearchPositions(
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()),
+      [&](std::uint32_t position)
+      {
+        if (buries(position))
+        {
+          found = position;
+          return true;
+        }
+        return ++evaluated >= maxItems;
+      },
+      cutoff);
+  }
+  else
+  {
+    for (std::uint32_t slot = 0; slot < this->Records.size() && found == NoBurial; ++slot)
+    {
+      found = buries(slot) ? slot : NoBurial;
+    }
+  }
+  return found;
+}
+
 void MedialEnvelope::Containing(
   const Point3& p, std::vector<std::pair<double, std::uint32_t>>& out) const
 {

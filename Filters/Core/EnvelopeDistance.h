@@ -154,6 +154,17 @@ public:
   /// likely ones to bury it).
   bool StrictlyInside(const Point3& p, double tolerance, const Index* vertices, int count) const;
 
+  /// A primitive containing p deeper than tolerance, as an opaque handle, or
+  /// NoBurial. Tried in order: `hint` (a handle returned for a nearby point:
+  /// neighbouring points are mostly buried by the same primitive), the
+  /// primitives incident to the given medial vertices, then the tree. With
+  /// maxItems, the tree search gives up after evaluating that many
+  /// primitives, so NoBurial only means "none found" (deterministically).
+  static constexpr std::uint32_t NoBurial = std::numeric_limits<std::uint32_t>::max();
+  std::uint32_t FindBurying(const Point3& p, double tolerance, const Index* vertices, int count,
+    std::uint32_t hint = NoBurial,
+    std::size_t maxItems = std::numeric_limits<std::size_t>::max()) const;
+
   struct BoundaryDistance
   {
     double Signed; // F(p) outside; -Upper inside

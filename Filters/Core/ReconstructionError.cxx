@@ -8,6 +8,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -83,6 +84,10 @@ bool ForEachChunked(
 // acceptance test.
 constexpr int Bands = 16, Sectors = 32, Split = 4; // coarse cells, each split 4 x 4
 constexpr double TwoPi = 2.0 * Pi;
+// Burial tests of pieces only cull: past this many primitives evaluated in
+// the tree, a piece is kept (its candidates get the exact test), which costs
+// less than proving an exposed piece unburied.
+constexpr std::size_t BurialSearchItems = 32;
 
 struct DirectionCell
 {
@@ -330,11 +335,16 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
     }
     return true;
   };
-  auto buried = [&](const PrimitiveRef& ref, const Point3& x, double g)
+  // `hint` carries the burying primitive from one piece to the next of the
+  // same primitive (neighbouring pieces are mostly buried by the same one).
+  auto buried = [&](const PrimitiveRef& ref, const Point3& x, double g, std::uint32_t& hint)
   {
     Index vertices[3];
     const int count = PrimitiveVertices(envelope, ref, vertices);
-    return envelope.StrictlyInside(x, g + tol, vertices, count);
+    const std::uint32_t by =
+      envelope.FindBurying(x, g + tol, vertices, count, hint, BurialSearchItems);
+    hint = by == MedialEnvelope::NoBurial ? hint : by;
+    return by != MedialEnvelope::NoBurial;
   };
 
   // Pieces per primitive, in parallel; concatenated in primitive order.
@@ -348,6 +358,7 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
       for (std::size_t i = r.begin(); i < r.end(); ++i)
       {
         std::vector<Piece>& out = perPrimitive[i];
+        std::uint32_t hint = MedialEnvelope::NoBurial;
         if (i < nv)
         {
           const SpherePrimitive& s = envelope.Spheres()[i];
@@ -359,7 +370,8 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
           for (std::size_t k = 0; k < coarse.size(); ++k)
           {
             if (!supports(i, coarse[k]) ||
-              buried(ref, s.Center + s.Radius * coarse[k].Centre, s.Radius * coarse[k].Radius))
+              buried(
+                ref, s.Center + s.Radius * coarse[k].Centre, s.Radius * coarse[k].Radius, hint))
             {
               continue;
             }
@@ -411,7 +423,7 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
               {
                 const double s0 = double(sl) / Slices, s1 = double(sl + 1) / Slices;
                 const double g = 0.5 * (s1 - s0) * slant + 0.5 * (t1 - t0) * rhoMax;
-                if (!buried(ref, BandPoint(c, 0.5 * (s0 + s1), 0.5 * (t0 + t1)), g))
+                if (!buried(ref, BandPoint(c, 0.5 * (s0 + s1), 0.5 * (t0 + t1)), g, hint))
                 {
                   out.push_back({ ref, 0, s0, s1, t0, t1 });
                 }
@@ -579,7 +591,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   const std::uint64_t envelopeSeed = options.RandomSeed ^ 0x5DEECE66Dull;
   std::size_t drawn = 0;
   std::vector<Point3> batchPoints;
-  std::vector<PrimitiveRef> batchRefs;
+  std::vector<std::uint32_t> batchPieces, byPiece;
   std::vector<std::uint8_t> keep;
   while (result.EnvelopeSamples.size() < target && drawn < limit)
   {
@@ -589,7 +601,8 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
       std::min<std::size_t>({ static_cast<std::size_t>(1.2 * double(target - have) / rate) + 1024,
         std::size_t(1) << 18, limit - drawn });
     batchPoints.resize(batch);
-    batchRefs.resize(batch);
+    batchPieces.resize(batch);
+    byPiece.resize(batch);
     keep.assign(batch, 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch, 1024),
       [&](const tbb::blocked_range<std::size_t>& r)
@@ -597,14 +610,33 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
         for (std::size_t i = r.begin(); i < r.end(); ++i)
         {
           Random rng = SampleRandom(envelopeSeed, drawn + i);
-          const Piece& piece = pieces.Pieces[PickFromCdf(pieces.Cdf, rng.Uniform())];
-          batchPoints[i] = SamplePiece(envelope, piece, rng);
-          batchRefs[i] = piece.Ref;
-          // Neighbours first: they bury most rejected candidates.
+          const std::size_t piece = PickFromCdf(pieces.Cdf, rng.Uniform());
+          batchPieces[i] = static_cast<std::uint32_t>(piece);
+          batchPoints[i] = SamplePiece(envelope, pieces.Pieces[piece], rng);
+          byPiece[i] = static_cast<std::uint32_t>(i);
+        }
+      });
+    // Tested in piece order, so that consecutive candidates are close and a
+    // primitive that buried one is tried first on the next. keep[i] does not
+    // depend on that order.
+    tbb::parallel_sort(byPiece.begin(), byPiece.end(),
+      [&](std::uint32_t a, std::uint32_t b)
+      { return batchPieces[a] < batchPieces[b] || (batchPieces[a] == batchPieces[b] && a < b); });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch, 1024),
+      [&](const tbb::blocked_range<std::size_t>& r)
+      {
+        std::uint32_t hint = MedialEnvelope::NoBurial;
+        for (std::size_t k = r.begin(); k < r.end(); ++k)
+        {
+          const std::uint32_t i = byPiece[k];
+          // Neighbours next: they bury most rejected candidates.
           Index vertices[3];
-          const int count = PrimitiveVertices(envelope, piece.Ref, vertices);
-          keep[i] =
-            envelope.StrictlyInside(batchPoints[i], envelope.Tolerance(), vertices, count) ? 0 : 1;
+          const int count =
+            PrimitiveVertices(envelope, pieces.Pieces[batchPieces[i]].Ref, vertices);
+          const std::uint32_t by =
+            envelope.FindBurying(batchPoints[i], envelope.Tolerance(), vertices, count, hint);
+          keep[i] = by == MedialEnvelope::NoBurial ? 1 : 0;
+          hint = keep[i] ? hint : by;
         }
       });
     for (std::size_t i = 0; i < batch && result.EnvelopeSamples.size() < target; ++i)
@@ -613,7 +645,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
       if (keep[i])
       {
         result.EnvelopeSamples.push_back(batchPoints[i]);
-        result.EnvelopeSamplePrimitive.push_back(batchRefs[i]);
+        result.EnvelopeSamplePrimitive.push_back(pieces.Pieces[batchPieces[i]].Ref);
       }
     }
     drawn += batch;

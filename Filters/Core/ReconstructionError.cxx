@@ -64,6 +64,50 @@ bool ForEachChunked(
   return true;
 }
 
+// The indices 0..n-1 of points along a Morton (Z-order) curve: queries in
+// that order walk the same tree nodes and primitives one after the other,
+// which keeps them in cache.
+template <typename PointOf>
+std::vector<std::uint32_t> SpatialOrder(std::size_t n, PointOf&& pointOf)
+{
+  Box box;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    box.Extend(pointOf(i));
+  }
+  const double extent =
+    std::max({ box.Hi[0] - box.Lo[0], box.Hi[1] - box.Lo[1], box.Hi[2] - box.Lo[2], 1e-300 });
+  auto spread = [](std::uint64_t v) // 21 bits -> every third bit
+  {
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffull;
+    v = (v | v << 16) & 0x1f0000ff0000ffull;
+    v = (v | v << 8) & 0x100f00f00f00f00full;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ull;
+    v = (v | v << 2) & 0x1249249249249249ull;
+    return v;
+  };
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Point3 p = pointOf(i);
+    std::uint64_t code = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double u = (p[k] - box.Lo[k]) / extent * 2097151.0;
+      code |= spread(static_cast<std::uint64_t>(std::clamp(u, 0.0, 2097151.0))) << k;
+    }
+    keys[i] = { code, static_cast<std::uint32_t>(i) };
+  }
+  tbb::parallel_sort(keys.begin(), keys.end());
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    order[i] = keys[i].second;
+  }
+  return order;
+}
+
 // Candidate envelope samples are drawn only where a primitive surface can
 // be on the boundary of the union. A point x = c_v + r_v n of ball v (or of a
 // cone band, with its normal n) is strictly inside a convex primitive H that
@@ -570,9 +614,12 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   SampleTriangleMesh(surface, options.NumberOfSamples, options.RandomSeed, samples, sampleNormals);
   const std::size_t ns = samples.size();
   std::vector<MedialEnvelope::BoundaryDistance> distances(nv + ns);
+  const std::vector<std::uint32_t> surfaceOrder = SpatialOrder(
+    nv + ns, [&](std::size_t i) { return i < nv ? surface.Points[i] : samples[i - nv]; });
   if (!ForEachChunked(nv + ns, 0.0, 0.6, options.Progress,
-        [&](std::size_t i)
+        [&](std::size_t k)
         {
+          const std::size_t i = surfaceOrder[k];
           distances[i] = i < nv
             ? envelope.DistanceToBoundary(surface.Points[i], &vertexNormals[i])
             : envelope.DistanceToBoundary(samples[i - nv], &sampleNormals[i - nv]);

@@ -138,6 +138,7 @@ struct DirectionCell
   double Z0, Z1, Theta0, Width;
   Point3 Centre;
   double Radius; // angular radius, with a safety margin
+  double CosRadius, SinRadius;
 };
 
 std::vector<DirectionCell> MakeCells(int bands, int sectors)
@@ -170,6 +171,8 @@ std::vector<DirectionCell> MakeCells(int bands, int sectors)
         }
       }
       cell.Radius = 1.2 * radius;
+      cell.CosRadius = std::cos(cell.Radius);
+      cell.SinRadius = std::sin(cell.Radius);
       out.push_back(cell);
     }
   }
@@ -354,8 +357,17 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
   }
   // Can a direction of `cell` satisfy n . (c_j - c_v) <= r_v - r_j for
   // every neighbour j of v?
-  auto supports = [&](std::size_t v, const DirectionCell& cell)
+  // The constraints of ball v's neighbours j, as unit direction u_j and
+  // sigma_j = (r_v - r_j) / |c_j - c_v|; false when some neighbour's ball
+  // contains ball v (then nothing of v is exposed).
+  struct Constraint
   {
+    Point3 Direction;
+    double Sigma;
+  };
+  auto constraints = [&](std::size_t v, std::vector<Constraint>& out)
+  {
+    out.clear();
     const SpherePrimitive& s = envelope.Spheres()[v];
     for (Index j : neighbours[v])
     {
@@ -370,9 +382,22 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
         }
         continue;
       }
-      const double sigma = (s.Radius - o.Radius) / length;
-      const double angle = std::acos(std::clamp(Dot(cell.Centre, d) / length, -1.0, 1.0));
-      if (angle + cell.Radius < Pi && std::cos(angle + cell.Radius) > sigma + 1e-12)
+      out.push_back({ (1.0 / length) * d, (s.Radius - o.Radius) / length });
+    }
+    return true;
+  };
+  // Can a direction of `cell` satisfy n . u_j <= sigma_j for every
+  // constraint? The farthest direction of the cell from u_j is at angle
+  // a + Radius, a = the centre's angle: excluded when cos(a + Radius) >
+  // sigma_j (+ margin), with cos(a + Radius) expanded so that no acos is
+  // needed (a + Radius < pi iff cos a > -cos Radius).
+  auto supports = [](const std::vector<Constraint>& list, const DirectionCell& cell)
+  {
+    for (const Constraint& c : list)
+    {
+      const double cosA = std::clamp(Dot(cell.Centre, c.Direction), -1.0, 1.0);
+      if (cosA > -cell.CosRadius &&
+        cosA * cell.CosRadius - std::sqrt(1.0 - cosA * cosA) * cell.SinRadius > c.Sigma + 1e-12)
       {
         return false;
       }
@@ -403,17 +428,18 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
       {
         std::vector<Piece>& out = perPrimitive[i];
         std::uint32_t hint = MedialEnvelope::NoBurial;
+        std::vector<Constraint> list;
         if (i < nv)
         {
           const SpherePrimitive& s = envelope.Spheres()[i];
           const PrimitiveRef ref{ PrimitiveKind::Sphere, static_cast<Index>(i) };
-          if (!(s.Radius > 0.0))
+          if (!(s.Radius > 0.0) || !constraints(i, list))
           {
             continue;
           }
           for (std::size_t k = 0; k < coarse.size(); ++k)
           {
-            if (!supports(i, coarse[k]) ||
+            if (!supports(list, coarse[k]) ||
               buried(
                 ref, s.Center + s.Radius * coarse[k].Centre, s.Radius * coarse[k].Radius, hint))
             {
@@ -426,7 +452,7 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
               {
                 const DirectionCell& cell =
                   fine[(b * Split + zi) * (Sectors * Split) + sector * Split + ti];
-                if (supports(i, cell))
+                if (supports(list, cell))
                 {
                   out.push_back(
                     { ref, 0, cell.Z0, cell.Z1, cell.Theta0, cell.Theta0 + cell.Width });
@@ -638,7 +664,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   const std::uint64_t envelopeSeed = options.RandomSeed ^ 0x5DEECE66Dull;
   std::size_t drawn = 0;
   std::vector<Point3> batchPoints;
-  std::vector<std::uint32_t> batchPieces, byPiece;
+  std::vector<std::uint32_t> batchPieces;
   std::vector<std::uint8_t> keep;
   while (result.EnvelopeSamples.size() < target && drawn < limit)
   {
@@ -649,7 +675,6 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
         std::size_t(1) << 18, limit - drawn });
     batchPoints.resize(batch);
     batchPieces.resize(batch);
-    byPiece.resize(batch);
     keep.assign(batch, 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch, 1024),
       [&](const tbb::blocked_range<std::size_t>& r)
@@ -660,22 +685,20 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
           const std::size_t piece = PickFromCdf(pieces.Cdf, rng.Uniform());
           batchPieces[i] = static_cast<std::uint32_t>(piece);
           batchPoints[i] = SamplePiece(envelope, pieces.Pieces[piece], rng);
-          byPiece[i] = static_cast<std::uint32_t>(i);
         }
       });
-    // Tested in piece order, so that consecutive candidates are close and a
-    // primitive that buried one is tried first on the next. keep[i] does not
-    // depend on that order.
-    tbb::parallel_sort(byPiece.begin(), byPiece.end(),
-      [&](std::uint32_t a, std::uint32_t b)
-      { return batchPieces[a] < batchPieces[b] || (batchPieces[a] == batchPieces[b] && a < b); });
+    // Tested along a Morton curve: consecutive candidates are close, so a
+    // primitive that buried one is tried first on the next, and they share
+    // cached tree nodes. keep[i] does not depend on that order.
+    const std::vector<std::uint32_t> spatial =
+      SpatialOrder(batch, [&](std::size_t i) { return batchPoints[i]; });
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch, 1024),
       [&](const tbb::blocked_range<std::size_t>& r)
       {
         std::uint32_t hint = MedialEnvelope::NoBurial;
         for (std::size_t k = r.begin(); k < r.end(); ++k)
         {
-          const std::uint32_t i = byPiece[k];
+          const std::uint32_t i = spatial[k];
           // Neighbours next: they bury most rejected candidates.
           Index vertices[3];
           const int count =

@@ -281,6 +281,84 @@ MedialEnvelope::MedialEnvelope(const MedialMesh& mesh, bool accelerate)
         dop.Extend(this->NodeDops[node.Begin + 1]);
       }
     }
+    this->BuildSheetPlanes();
+  }
+}
+
+void MedialEnvelope::BuildSheetPlanes()
+{
+  const auto& nodes = this->Tree.GetNodes();
+  const auto& items = this->Tree.GetItems();
+  // Each node covers a contiguous range of items; children follow parents.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> range(nodes.size());
+  for (std::size_t n = nodes.size(); n-- > 0;)
+  {
+    const BoxTree::Node& node = nodes[n];
+    range[n] = node.Count > 0
+      ? std::make_pair(node.Begin, node.Begin + node.Count)
+      : std::make_pair(range[node.Begin].first, range[node.Begin + 1].second);
+  }
+  auto vertices = [&](std::uint32_t active, Index out[3])
+  {
+    const PrimitiveRef& ref = this->Active[active];
+    if (ref.Kind == PrimitiveKind::Sphere)
+    {
+      out[0] = ref.Id;
+      return 1;
+    }
+    if (ref.Kind == PrimitiveKind::Cone)
+    {
+      std::copy_n(this->Edges[ref.Id].begin(), 2, out);
+      return 2;
+    }
+    std::copy_n(this->Faces[ref.Id].begin(), 3, out);
+    return 3;
+  };
+  this->NodePlanes.assign(
+    nodes.size(), SheetPlanes{ { { 0, 0, 0 }, { 0, 0, 0 } }, { Infinity, Infinity } });
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+  {
+    // Side normals of the slabs, each pair oriented like the first one.
+    Point3 sum[2] = { { 0, 0, 0 }, { 0, 0, 0 } };
+    const Point3* reference = nullptr;
+    for (std::uint32_t i = range[n].first; i < range[n].second; ++i)
+    {
+      const PrimitiveRef& ref = this->Active[items[i]];
+      if (ref.Kind != PrimitiveKind::Slab)
+      {
+        continue;
+      }
+      const SlabPrimitive& slab = this->SlabList[ref.Id];
+      reference = reference ? reference : &slab.Normals[0];
+      const int first = Dot(slab.Normals[0], *reference) >= 0.0 ? 0 : 1;
+      sum[0] = sum[0] + slab.Normals[first];
+      sum[1] = sum[1] + slab.Normals[1 - first];
+    }
+    SheetPlanes& planes = this->NodePlanes[n];
+    for (int side = 0; side < 2 && reference; ++side)
+    {
+      const double length = Norm(sum[side]);
+      if (!(length > 0.0))
+      {
+        continue;
+      }
+      const Point3 u = (1.0 / length) * sum[side];
+      double h = -Infinity;
+      for (std::uint32_t i = range[n].first; i < range[n].second; ++i)
+      {
+        Index v[3];
+        const int count = vertices(items[i], v);
+        for (int k = 0; k < count; ++k)
+        {
+          const SpherePrimitive& ball = this->SphereList[v[k]];
+          h = std::max(h, Dot(u, ball.Center) + ball.Radius);
+        }
+      }
+      // Rounding of u . x: a relative margin keeps the half-space containing.
+      h += 1e-12 * (std::abs(h) + this->Diagonal());
+      std::copy(u.begin(), u.end(), planes.U[side]);
+      planes.H[side] = h;
+    }
   }
 }
 
@@ -390,16 +468,29 @@ struct SignedBound
 {
   const BoxTree::Node* First;
   const MedialEnvelope::Dop* Dops;
+  const MedialEnvelope::SheetPlanes* Planes;
+  Point3 P;
   double T[MedialEnvelope::Dop::K];
-  SignedBound(const Point3& p, const BoxTree::Node* first, const MedialEnvelope::Dop* dops)
+  SignedBound(const Point3& p, const BoxTree::Node* first, const MedialEnvelope::Dop* dops,
+    const MedialEnvelope::SheetPlanes* planes)
     : First(first)
     , Dops(dops)
+    , Planes(planes)
+    , P(p)
   {
     MedialEnvelope::Dop::Project(p, this->T);
   }
   double operator()(const BoxTree::Node& n) const
   {
-    return this->Dops[&n - this->First].Bound(this->T);
+    const std::size_t i = &n - this->First;
+    const MedialEnvelope::SheetPlanes& planes = this->Planes[i];
+    double b = this->Dops[i].Bound(this->T);
+    for (int side = 0; side < 2; ++side)
+    {
+      const double* u = planes.U[side];
+      b = std::max(b, u[0] * this->P[0] + u[1] * this->P[1] + u[2] * this->P[2] - planes.H[side]);
+    }
+    return b;
   }
 };
 }
@@ -415,7 +506,7 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
     const Compact* records = this->Records.data();
     const std::uint32_t* items = this->Tree.GetItems().data();
     this->Tree.SearchPositions(
-      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()),
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data(), this->NodePlanes.data()),
       [&](std::uint32_t position)
       {
         const double v = CompactValue(records[position].D, records[position].Kind, p);
@@ -457,7 +548,7 @@ bool MedialEnvelope::StrictlyInside(const Point3& p, double tolerance) const
   {
     const Compact* records = this->Records.data();
     this->Tree.SearchPositions(
-      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()),
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data(), this->NodePlanes.data()),
       [&](std::uint32_t position)
       {
         found = CompactValue(records[position].D, records[position].Kind, p) < cutoff;
@@ -521,7 +612,7 @@ std::uint32_t MedialEnvelope::FindBurying(const Point3& p, double tolerance, con
   {
     std::size_t evaluated = 0;
     this->Tree.SearchPositions(
-      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()),
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data(), this->NodePlanes.data()),
       [&](std::uint32_t position)
       {
         if (buries(position))
@@ -560,7 +651,8 @@ void MedialEnvelope::Containing(
   if (this->Accelerate)
   {
     this->Tree.Search(
-      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data()), visit, cutoff);
+      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data(), this->NodePlanes.data()),
+      visit, cutoff);
   }
   else
   {

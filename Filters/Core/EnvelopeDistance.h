@@ -119,6 +119,16 @@ public:
     }
   };
 
+  /// Per tree node: two half-spaces u . x <= h containing every ball below
+  /// it, with u the mean outward normal of each side of the slabs below (the
+  /// sides of a medial sheet). Near a
+  /// sheet's envelope they bound far more tightly than the 13 fixed axes.
+  /// Without slabs: u = 0, h = +infinity (no bound).
+  struct SheetPlanes
+  {
+    double U[2][3];
+    double H[2];
+  };
   /// Builds every primitive of a valid medial mesh. With accelerate = false
   /// every query loops over all primitives (the brute-force reference).
   explicit MedialEnvelope(const MedialMesh& mesh, bool accelerate = true);
@@ -192,6 +202,7 @@ private:
   void Containing(const Point3& p, std::vector<std::pair<double, std::uint32_t>>& out) const;
   double ProjectOntoBoundary(const Point3& p, std::uint32_t start) const;
   double TraceExit(const Point3& p, const Point3& direction, double limit) const;
+  void BuildSheetPlanes();
 
   std::vector<SpherePrimitive> SphereList;
   std::vector<ConePrimitive> ConeList;
@@ -212,10 +223,11 @@ private:
   std::vector<std::uint32_t> Slot; // active id -> index in Records
   // Active primitives incident to each medial vertex (compressed rows).
   std::vector<std::uint32_t> IncidentOffsets, Incident;
-  std::vector<Box> ActiveBoxes;     // boxes of the centres
-  std::vector<Box> ActiveBallBoxes; // boxes of the primitives
-  std::vector<Dop> NodeDops;        // per tree node: hull of the balls below it
-  std::vector<double> ActiveRadius; // largest radius
+  std::vector<Box> ActiveBoxes;        // boxes of the centres
+  std::vector<Box> ActiveBallBoxes;    // boxes of the primitives
+  std::vector<Dop> NodeDops;           // per tree node: hull of the balls below it
+  std::vector<SheetPlanes> NodePlanes; // per tree node
+  std::vector<double> ActiveRadius;    // largest radius
   BoxTree Tree;
   bool Accelerate;
   Box UnionBounds;

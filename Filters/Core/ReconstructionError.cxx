@@ -33,6 +33,54 @@ std::size_t PickFromCdf(const std::vector<double>& cdf, double u)
   return std::min<std::size_t>(static_cast<std::size_t>(it - cdf.begin()), cdf.size() - 1);
 }
 
+// PickFromCdf with a guide table: bucket j of equal width remembers where
+// its values start, so that a pick reads a few entries instead of binary
+// searching a long cumulative array (cache misses on ~1M pieces). The range
+// found is checked and the plain search used if rounding put the value in a
+// neighbouring bucket, so picks are identical to PickFromCdf's.
+class GuidedCdf
+{
+public:
+  void Build(std::vector<double> cdf)
+  {
+    this->Cdf = std::move(cdf);
+    const std::size_t buckets = std::max<std::size_t>(this->Cdf.size(), 1);
+    this->Scale = this->Cdf.empty() ? 0.0 : double(buckets) / this->Cdf.back();
+    this->Guide.resize(buckets + 1);
+    std::size_t i = 0;
+    for (std::size_t j = 0; j <= buckets; ++j)
+    {
+      const double start = this->Cdf.empty() ? 0.0 : double(j) / this->Scale;
+      while (i < this->Cdf.size() && this->Cdf[i] <= start)
+      {
+        ++i;
+      }
+      this->Guide[j] = static_cast<std::uint32_t>(i);
+    }
+  }
+  bool Empty() const { return this->Cdf.empty(); }
+  std::size_t Pick(double u) const
+  {
+    const double v = u * this->Cdf.back();
+    const std::size_t j =
+      std::min(static_cast<std::size_t>(v * this->Scale), this->Guide.size() - 2);
+    const std::size_t lo = this->Guide[j],
+                      hi = std::min<std::size_t>(this->Guide[j + 1] + 1, this->Cdf.size());
+    if ((lo > 0 && this->Cdf[lo - 1] > v) || (lo >= hi) || (this->Cdf[hi - 1] <= v))
+    {
+      return PickFromCdf(this->Cdf, u);
+    }
+    const auto it = std::upper_bound(this->Cdf.begin() + lo, this->Cdf.begin() + hi, v);
+    return std::min<std::size_t>(
+      static_cast<std::size_t>(it - this->Cdf.begin()), this->Cdf.size() - 1);
+  }
+
+private:
+  std::vector<double> Cdf;
+  std::vector<std::uint32_t> Guide; // first index whose value exceeds bucket j's start
+  double Scale = 0.0;               // buckets per unit of cumulative value
+};
+
 Point3 PointInTriangle(const Point3& a, const Point3& b, const Point3& c, double u, double v)
 {
   const double s = std::sqrt(u);
@@ -326,7 +374,7 @@ Point3 SamplePiece(const MedialEnvelope& envelope, const Piece& piece, Random& r
 struct PieceSet
 {
   std::vector<Piece> Pieces;
-  std::vector<double> Cdf;
+  GuidedCdf Cdf; // of the pieces' areas
 };
 
 PieceSet EnvelopePieces(const MedialEnvelope& envelope)
@@ -515,6 +563,7 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
       }
     });
   PieceSet set;
+  std::vector<double> cdf;
   double total = 0.0;
   for (const auto& list : perPrimitive)
   {
@@ -549,10 +598,11 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
       {
         total += area;
         set.Pieces.push_back(p);
-        set.Cdf.push_back(total);
+        cdf.push_back(total);
       }
     }
   }
+  set.Cdf.Build(std::move(cdf));
   return set;
 }
 
@@ -682,7 +732,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
         for (std::size_t i = r.begin(); i < r.end(); ++i)
         {
           Random rng = SampleRandom(envelopeSeed, drawn + i);
-          const std::size_t piece = PickFromCdf(pieces.Cdf, rng.Uniform());
+          const std::size_t piece = pieces.Cdf.Pick(rng.Uniform());
           batchPieces[i] = static_cast<std::uint32_t>(piece);
           batchPoints[i] = SamplePiece(envelope, pieces.Pieces[piece], rng);
         }

@@ -498,6 +498,114 @@ TEST(EnvelopeDistance, InsideTheUnionAtACrease)
   EXPECT_GT(crease, 0);
 }
 
+namespace
+{
+// A curved, tilted medial sheet of large overlapping balls (the dense stack
+// of nearly coincident primitive surfaces that real MATs have), with a
+// dangling edge and an isolated ball.
+MedialMesh WavySheet()
+{
+  MedialMesh m;
+  constexpr int n = 12;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double u = i / double(n - 1), v = j / double(n - 1);
+      const double z = 0.15 * std::sin(3.0 * u) * std::cos(2.0 * v);
+      // Tilted by about 30 degrees about x and 20 about z.
+      const double y = 0.866 * v - 0.5 * z, w = 0.5 * v + 0.866 * z;
+      m.Centers.push_back({ 0.94 * u - 0.342 * y, 0.342 * u + 0.94 * y, w });
+      m.Radii.push_back(0.25 + 0.05 * std::sin(5.0 * u + 2.0 * v));
+    }
+  }
+  for (int j = 0; j + 1 < n; ++j)
+  {
+    for (int i = 0; i + 1 < n; ++i)
+    {
+      const Index a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      m.Faces.push_back({ a, b, d });
+      m.Faces.push_back({ a, d, c });
+    }
+  }
+  m.Centers.push_back({ 1.3, 0.4, 0.3 });
+  m.Radii.push_back(0.2);
+  m.Edges.push_back({ n - 1, static_cast<Index>(m.Centers.size() - 1) });
+  m.Centers.push_back({ -0.6, -0.6, 0.5 });
+  m.Radii.push_back(0.15);
+  return m;
+}
+}
+
+// The tree's pruning bounds (hull directions and sheet half-spaces) never
+// change a result: the accelerated queries equal brute force over every
+// primitive on a sheet of heavily overlapping balls, at random points and at
+// points of the primitive surfaces (where the union's boundary tests run).
+TEST(EnvelopeDistance, AcceleratedQueriesMatchBruteForceOnASheet)
+{
+  const MedialMesh sheet = WavySheet();
+  ASSERT_TRUE(ValidateMedialMesh(sheet).IsValid());
+  const MedialEnvelope fast(sheet), brute(sheet, false);
+  const double tol = fast.Tolerance();
+  Random rng(17);
+  std::vector<Point3> points;
+  for (int i = 0; i < 3000; ++i)
+  {
+    points.push_back(RandomPoint(rng, -0.8, 1.6));
+  }
+  // Points of the tangent triangles and cone bands: on or near the boundary.
+  for (std::size_t f = 0; f < fast.Slabs().size(); f += 3)
+  {
+    if (fast.Slabs()[f].HasTangentPlanes)
+    {
+      for (int side = 0; side < 2; ++side)
+      {
+        const auto t = SlabTangentTriangle(fast.Slabs()[f], side);
+        const double a = rng.Uniform(), b = rng.Uniform() * (1.0 - a);
+        points.push_back(t[0] + a * (t[1] - t[0]) + b * (t[2] - t[0]));
+      }
+    }
+  }
+  for (std::size_t e = 0; e < fast.Cones().size(); e += 3)
+  {
+    if (!fast.Cones()[e].Nested)
+    {
+      points.push_back(ConeTangentPoint(fast.Cones()[e], int(e % 2), 2.0 * Pi * rng.Uniform()));
+    }
+  }
+  std::size_t inside = 0, boundary = 0;
+  std::uint32_t hint = MedialEnvelope::NoBurial;
+  for (const Point3& p : points)
+  {
+    const auto a = fast.SignedDistance(p), b = brute.SignedDistance(p);
+    EXPECT_EQ(a.Distance, b.Distance);
+    const bool buried = brute.StrictlyInside(p, tol);
+    EXPECT_EQ(fast.StrictlyInside(p, tol), buried);
+    inside += buried ? 1 : 0;
+    boundary += std::abs(b.Distance) < 1e-9 ? 1 : 0;
+    // FindBurying: a primitive that really buries p, whatever the hint;
+    // with a search budget it may miss one but never invents one.
+    for (const MedialEnvelope* envelope : { &fast, &brute })
+    {
+      const std::uint32_t by = envelope->FindBurying(p, tol, nullptr, 0, hint);
+      EXPECT_EQ(by != MedialEnvelope::NoBurial, buried);
+      if (by != MedialEnvelope::NoBurial)
+      {
+        EXPECT_EQ(envelope->FindBurying(p, tol, nullptr, 0, by), by);
+      }
+      const std::uint32_t capped = envelope->FindBurying(p, tol, nullptr, 0, hint, 2);
+      EXPECT_TRUE(capped == MedialEnvelope::NoBurial || buried);
+    }
+    const std::uint32_t by = fast.FindBurying(p, tol, nullptr, 0, hint);
+    hint = by == MedialEnvelope::NoBurial ? hint : by;
+    const auto da = fast.DistanceToBoundary(p), db = brute.DistanceToBoundary(p);
+    EXPECT_NEAR(da.Upper, db.Upper, 1e-9 * std::max(std::abs(db.Upper), 1e-300));
+    EXPECT_NEAR(da.Lower, db.Lower, 1e-9 * std::max(db.Lower, 1e-300));
+  }
+  EXPECT_GT(inside, 300u);
+  EXPECT_GT(boundary, 50u);
+}
+
 // ---------------------------------------------------------------------------
 // Meshing
 

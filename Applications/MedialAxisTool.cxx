@@ -3,6 +3,7 @@
 // command line. See PrintHelp() for the options and exit codes.
 #include "MedialMesh.h"
 #include "MedialMeshQuality.h"
+#include "Screenshot.h"
 #include "vtkErrorEventText.h"
 #include "vtkFilletDetector.h"
 #include "vtkMedialAxisWriter.h"
@@ -83,6 +84,11 @@ Options:
                         surface and the envelope (% of the bounding-box
                         diagonal) and write distance.vtp (the surface with
                         point data Distance)
+  --screenshot FILE     render the result offscreen into a PNG: the surface
+                        (semi-transparent, fillet faces coloured with
+                        --fillets), the MAT coloured by radius and the fillet
+                        centre lines; without an X display the tool runs
+                        itself under xvfb-run (Debian package xvfb)
   --report FILE         write a JSON report: parameters, per-stage times, peak
                         memory, counts, Euler characteristic, triangle quality
                         and (with --error) the Hausdorff distances
@@ -97,7 +103,7 @@ message names the defect, e.g. an open surface and its boundary edges);
 
 struct Options
 {
-  std::string Input, OutputDir, Report;
+  std::string Input, OutputDir, Report, Screenshot;
   vtkIdType Samples = -1, Target = -1;
   int Sharp = -1; // -1: from the preset
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
@@ -187,6 +193,14 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
         return arg + " must be a non-negative whole number";
       }
       (arg == "--seed" ? o.Seed : o.Threads) = static_cast<int>(number);
+    }
+    else if (arg == "--screenshot")
+    {
+      if (i + 1 >= argc)
+      {
+        return "--screenshot needs a file name";
+      }
+      o.Screenshot = argv[++i];
     }
     else if (arg == "--report")
     {
@@ -362,6 +376,27 @@ int main(int argc, char** argv)
     std::cerr << "medial-axis: " << problem << "\n";
     return BadArguments;
   }
+  // Offscreen rendering needs an X display: run under a virtual one.
+  if (!o.Screenshot.empty() && !std::getenv("DISPLAY"))
+  {
+    if (std::getenv("MEDIALAXIS_UNDER_XVFB"))
+    {
+      std::cerr << "medial-axis: --screenshot needs an X display, and xvfb-run gave none\n";
+      return BadArguments;
+    }
+    setenv("MEDIALAXIS_UNDER_XVFB", "1", 1);
+    std::vector<char*> args{ const_cast<char*>("xvfb-run"), const_cast<char*>("-a"),
+      const_cast<char*>("-s"), const_cast<char*>("-screen 0 1280x1024x24") };
+    for (int i = 0; i < argc; ++i)
+    {
+      args.push_back(argv[i]);
+    }
+    args.push_back(nullptr);
+    execvp("xvfb-run", args.data());
+    std::cerr << "medial-axis: --screenshot needs an X display or xvfb-run (Debian package "
+                 "xvfb)\n";
+    return BadArguments;
+  }
   std::error_code ec;
   std::filesystem::create_directories(o.OutputDir, ec);
   if (ec || !std::filesystem::is_directory(o.OutputDir))
@@ -484,6 +519,18 @@ int main(int argc, char** argv)
       WriteVtp(fillets->GetOutput(port), path);
       written.push_back(path);
     }
+  }
+  if (!o.Screenshot.empty())
+  {
+    const std::string problem = medialaxis::WriteScreenshot(o.Screenshot, validator->GetOutput(),
+      mat, o.Fillets ? fillets->GetOutput(1) : nullptr, o.Fillets ? fillets->GetOutput(0) : nullptr,
+      1200, 900);
+    if (!problem.empty())
+    {
+      std::cerr << "medial-axis: screenshot failed: " << problem << "\n";
+      return ComputationFailed;
+    }
+    written.push_back(o.Screenshot);
   }
   double hausdorff = -1.0, hausdorffPercent = -1.0, toEnvelope = -1.0, toSurface = -1.0;
   double errorSeconds = 0.0;

@@ -2,9 +2,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The main job on a default input: sets up what is missing, then checks and
 # prepares a generated filleted part (or the given surface), computes its
-# Structural MAT step by step, and runs the medial-axis tool on it for the
-# envelope, the reconstruction error and a JSON report. Everything goes to
-# output/.
+# Structural MAT step by step, and runs the medial-axis tool on it with the
+# CAD settings for the MAT, its fillets, the envelope, the reconstruction
+# error, a JSON report and a picture. Everything goes to output/.
 #   scripts/run-main.sh [surface file]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -14,6 +14,7 @@ out="$root/output"
 "$build/vtk/bin/PrepareSurfaceExample" --output "$out" "$@"
 # The prepared surface the example wrote (the newest *_prepared.vtp).
 prepared=$(ls -t "$out"/*_prepared.vtp | head -n 1)
-"$build/vtk/bin/medial-axis" --envelope --correspondence --error \
-  --report "$out/medial-axis/report.json" "$prepared" "$out/medial-axis"
+"$build/vtk/bin/medial-axis" --preset cad --fillets --envelope --correspondence --error \
+  --report "$out/medial-axis/report.json" --screenshot "$out/medial-axis/medial-axis.png" \
+  "$prepared" "$out/medial-axis"
 echo "results are in $out"

@@ -22,10 +22,10 @@ for arg in "$@"; do
 done
 
 packages=(cmake ninja-build g++ ccache pkg-config libvtk9-dev python3-vtk9 libcgal-dev
-  libeigen3-dev libtbb-dev liblbfgspp-dev libnanoflann-dev libgtest-dev)
+  libeigen3-dev libtbb-dev liblbfgspp-dev libnanoflann-dev libgtest-dev xvfb xauth)
 if [ "$with_paraview" = 1 ]; then
   # Never python3-paraview: it conflicts with python3-vtk9 (see make-paraview-sdk.sh).
-  packages+=(paraview paraview-dev xvfb xauth)
+  packages+=(paraview paraview-dev)
 fi
 
 missing=()

@@ -102,7 +102,9 @@ class CommandLineTest(unittest.TestCase):
         self.assertEqual(box.Write(), 1)
         out = self.path("out")
         report = self.path("report.json")
-        result = run("--preset", "cad", "--fillets", "--report", report, self.path("box.vtp"), out)
+        picture = self.path("box.png")
+        result = run("--preset", "cad", "--fillets", "--report", report, "--screenshot", picture,
+                     self.path("box.vtp"), out)
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("12 fillets", result.stdout)
         for name in ("fillets.vtp", "fillet_faces.vtp"):
@@ -114,6 +116,13 @@ class CommandLineTest(unittest.TestCase):
             self.assertAlmostEqual(fillet["mean_radius"], 0.1, delta=0.003)
             self.assertAlmostEqual(fillet["length"], 1.8, delta=0.06)
         self.assertGreater(data["seconds"]["Fillets"], 0.0)
+        # The picture: a PNG of the requested size, not blank.
+        reader = vtk.vtkPNGReader()
+        reader.SetFileName(picture)
+        reader.Update()
+        self.assertEqual(reader.GetOutput().GetDimensions()[:2], (1200, 900))
+        scalars = reader.GetOutput().GetPointData().GetScalars()
+        self.assertGreater(scalars.GetRange(0)[1] - scalars.GetRange(0)[0], 100)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Regenerates the README's pictures in docs/images with the medial-axis tool:
+# the MAT of an organic model (the Stanford Bunny from ../shared/data/meshes)
+# and of a generated CAD-like part with its fillets highlighted.
+#   scripts/make-pictures.sh
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${MEDIALAXIS_BUILD_DIR:-$root/build}
+meshes=${MEDIALAXIS_MESH_DIR:-$root/../shared/data/meshes}
+"$root/scripts/setup.sh" --library
+tool="$build/vtk/bin/medial-axis"
+images="$root/docs/images"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$images"
+# The filleted part of the main job (3 x 2 x 1, fillet radius 0.2).
+"$build/vtk/bin/PrepareSurfaceExample" --output "$work/part" --samples 1000 --target 100 >/dev/null
+part=$(ls -t "$work"/part/*_prepared.vtp | head -n 1)
+"$tool" --preset cad --fillets --quiet --screenshot "$images/cad-filleted-part.png" "$part" \
+  "$work/cad"
+"$tool" --preset organic --quiet --screenshot "$images/organic-bunny.png" "$meshes/bunny.obj" \
+  "$work/organic"
+echo "pictures are in $images"

@@ -131,9 +131,14 @@ public:
         {
           previous = end ? previous - 1 : previous + 1;
         }
+        const double length = Norm(centres[last] - centres[previous]);
         const Point3 direction = Normalized(centres[last] - centres[previous]);
-        this->Add(
-          centres[last], radii[last], centres[last] + 2.0 * radii[last] * direction, radii[last]);
+        // The radius keeps changing as it did (variable-radius fillets).
+        const double slope =
+          length > 0.0 ? std::clamp((radii[last] - radii[previous]) / length, -0.45, 0.45) : 0.0;
+        const double reach = 2.0 * radii[last];
+        this->Add(centres[last], radii[last], centres[last] + reach * direction,
+          radii[last] * (1.0 + 2.0 * slope));
       }
     }
   }
@@ -255,24 +260,49 @@ void RefineCentreLine(
     // A frame across the line.
     const Point3 helper = std::abs(tangent[0]) < 0.9 ? Point3{ 1, 0, 0 } : Point3{ 0, 1, 0 };
     const Point3 e1 = Normalized(Cross(tangent, helper)), e2 = Cross(tangent, e1);
-    std::vector<std::array<double, 2>> section;
+    // A thin slice across the line: the points nearest to the vertex's plane
+    // (at most a quarter radius away). Farther along, the curvature of the
+    // line, an error of the tangent or a changing radius would smear the
+    // section.
+    std::vector<std::pair<double, Point3>> slice;
     for (const Point3& p : nearest[i])
     {
-      // A thin slice across the line: farther along it, the curvature of the
-      // line and any error of the tangent would smear the section.
       const Point3 d = p - centres[i];
-      if (std::abs(Dot(d, tangent)) <= 0.25 * fillet.Radii[i])
+      const double s = Dot(d, tangent);
+      if (std::abs(s) <= 0.25 * fillet.Radii[i])
       {
-        section.push_back({ Dot(d, e1), Dot(d, e2) });
+        slice.push_back({ s, d });
       }
     }
+    constexpr std::size_t SlicePoints = 24;
+    if (slice.size() > SlicePoints)
+    {
+      std::nth_element(slice.begin(), slice.begin() + SlicePoints, slice.end(),
+        [](const auto& a, const auto& b)
+        {
+          return std::abs(a.first) < std::abs(b.first) ||
+            (std::abs(a.first) == std::abs(b.first) && a.first < b.first);
+        });
+      slice.resize(SlicePoints);
+    }
+    std::vector<std::array<double, 2>> section;
+    double along = 0.0;
+    for (const auto& [s, d] : slice)
+    {
+      section.push_back({ Dot(d, e1), Dot(d, e2) });
+      along += s;
+    }
+    // The section lies where its points are along the line (interior
+    // vertices; the ends keep the line's extent).
+    const bool end = !fillet.Closed && (i == 0 || i + 1 == n);
+    along = slice.empty() || end ? 0.0 : along / static_cast<double>(slice.size());
     const FittedCircle circle = FitCircleRobust(section, inlier);
     const double r = fillet.Radii[i];
     // Junctions (corner balls, several fillets) have no single section.
     if (circle.Valid && circle.InlierFraction >= 0.5 && std::hypot(circle.X, circle.Y) < 0.5 * r &&
       std::abs(circle.Radius - r) < 0.5 * r)
     {
-      fillet.Centres[i] = centres[i] + circle.X * e1 + circle.Y * e2;
+      fillet.Centres[i] = centres[i] + circle.X * e1 + circle.Y * e2 + along * tangent;
       fillet.Radii[i] = circle.Radius;
       fitted[i] = 1;
     }
@@ -349,6 +379,27 @@ void RefineCentreLine(
       after < 0 ? static_cast<std::size_t>(before) : static_cast<std::size_t>(after);
     fillet.Centres[i] = centres[i] + (1.0 - w) * offset[b] + w * offset[a];
     fillet.Radii[i] = (1.0 - w) * radii[b] + w * radii[a];
+  }
+  // Where the radius changes along the line (slope r' = dr/ds), a ball
+  // touches the fillet along a circle that is not its great circle: radius
+  // r sqrt(1 - r'^2), centre r r' behind the ball's centre along the line.
+  // The fits found those circles; turn them into balls.
+  const std::vector<Point3> circleCentres = fillet.Centres;
+  const std::vector<double> circleRadii = fillet.Radii;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t before = fillet.Closed ? (i + n - 1) % n : (i > 0 ? i - 1 : i);
+    const std::size_t after = fillet.Closed ? (i + 1) % n : (i + 1 < n ? i + 1 : i);
+    const Point3 step = circleCentres[after] - circleCentres[before];
+    const double length = Norm(step);
+    if (length == 0.0)
+    {
+      continue;
+    }
+    const double slope = std::clamp((circleRadii[after] - circleRadii[before]) / length, -0.9, 0.9);
+    const double r = circleRadii[i] / std::sqrt(1.0 - slope * slope);
+    fillet.Radii[i] = r;
+    fillet.Centres[i] = circleCentres[i] + (slope * r / length) * step;
   }
 }
 

@@ -3,6 +3,7 @@
 
 #include "ClosestPoint.h"
 #include "KdTree.h"
+#include "MortonOrder.h"
 #include "Random.h"
 #include "RestrictedVoronoi.h"
 #include "SurfacePreparation.h"
@@ -60,35 +61,14 @@ void RandomCandidates(const TriangleMesh& surface, std::size_t count, std::uint6
 void SortSpatially(std::vector<Point3>& points, std::vector<Index>& triangles)
 {
   const std::size_t n = points.size();
-  const auto [lo, hi] = BoundingBox(points);
-  const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-300 });
-  auto spread = [](std::uint64_t v) { // 21 bits -> every third bit
-    v &= 0x1fffff;
-    v = (v | v << 32) & 0x1f00000000ffffull;
-    v = (v | v << 16) & 0x1f0000ff0000ffull;
-    v = (v | v << 8) & 0x100f00f00f00f00full;
-    v = (v | v << 4) & 0x10c30c30c30c30c3ull;
-    v = (v | v << 2) & 0x1249249249249249ull;
-    return v;
-  };
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    std::uint64_t code = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double u = (points[i][k] - lo[k]) / extent * 2097151.0;
-      code |= spread(static_cast<std::uint64_t>(std::clamp(u, 0.0, 2097151.0))) << k;
-    }
-    keys[i] = { code, static_cast<std::uint32_t>(i) };
-  }
-  std::sort(keys.begin(), keys.end());
+  const std::vector<std::uint32_t> order =
+    MortonOrder(n, [&points](std::size_t i) { return points[i]; });
   std::vector<Point3> sortedPoints(n);
   std::vector<Index> sortedTriangles(n);
   for (std::size_t i = 0; i < n; ++i)
   {
-    sortedPoints[i] = points[keys[i].second];
-    sortedTriangles[i] = triangles[keys[i].second];
+    sortedPoints[i] = points[order[i]];
+    sortedTriangles[i] = triangles[order[i]];
   }
   points.swap(sortedPoints);
   triangles.swap(sortedTriangles);

@@ -2,13 +2,13 @@
 #include "ReconstructionError.h"
 
 #include "KdTree.h"
+#include "MortonOrder.h"
 #include "Random.h"
 #include "TriangleLocator.h"
 #include "Vec3.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -110,50 +110,6 @@ bool ForEachChunked(
     }
   }
   return true;
-}
-
-// The indices 0..n-1 of points along a Morton (Z-order) curve: queries in
-// that order walk the same tree nodes and primitives one after the other,
-// which keeps them in cache.
-template <typename PointOf>
-std::vector<std::uint32_t> SpatialOrder(std::size_t n, PointOf&& pointOf)
-{
-  Box box;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    box.Extend(pointOf(i));
-  }
-  const double extent =
-    std::max({ box.Hi[0] - box.Lo[0], box.Hi[1] - box.Lo[1], box.Hi[2] - box.Lo[2], 1e-300 });
-  auto spread = [](std::uint64_t v) // 21 bits -> every third bit
-  {
-    v &= 0x1fffff;
-    v = (v | v << 32) & 0x1f00000000ffffull;
-    v = (v | v << 16) & 0x1f0000ff0000ffull;
-    v = (v | v << 8) & 0x100f00f00f00f00full;
-    v = (v | v << 4) & 0x10c30c30c30c30c3ull;
-    v = (v | v << 2) & 0x1249249249249249ull;
-    return v;
-  };
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const Point3 p = pointOf(i);
-    std::uint64_t code = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double u = (p[k] - box.Lo[k]) / extent * 2097151.0;
-      code |= spread(static_cast<std::uint64_t>(std::clamp(u, 0.0, 2097151.0))) << k;
-    }
-    keys[i] = { code, static_cast<std::uint32_t>(i) };
-  }
-  tbb::parallel_sort(keys.begin(), keys.end());
-  std::vector<std::uint32_t> order(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    order[i] = keys[i].second;
-  }
-  return order;
 }
 
 // Candidate envelope samples are drawn only where a primitive surface can
@@ -690,7 +646,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   SampleTriangleMesh(surface, options.NumberOfSamples, options.RandomSeed, samples, sampleNormals);
   const std::size_t ns = samples.size();
   std::vector<MedialEnvelope::BoundaryDistance> distances(nv + ns);
-  const std::vector<std::uint32_t> surfaceOrder = SpatialOrder(
+  const std::vector<std::uint32_t> surfaceOrder = MortonOrder(
     nv + ns, [&](std::size_t i) { return i < nv ? surface.Points[i] : samples[i - nv]; });
   if (!ForEachChunked(nv + ns, 0.0, 0.6, options.Progress,
         [&](std::size_t k)
@@ -741,7 +697,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
     // primitive that buried one is tried first on the next, and they share
     // cached tree nodes. keep[i] does not depend on that order.
     const std::vector<std::uint32_t> spatial =
-      SpatialOrder(batch, [&](std::size_t i) { return batchPoints[i]; });
+      MortonOrder(batch, [&](std::size_t i) { return batchPoints[i]; });
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch, 1024),
       [&](const tbb::blocked_range<std::size_t>& r)
       {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkSurfaceFileReader.h"
 
+#include "ObjCheck.h"
 #include "vtkErrorEventText.h"
 
 #include "vtkOFFReader.h"
@@ -19,6 +20,9 @@
 #include "vtkSmartPointer.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtksys/SystemTools.hxx"
+
+#include <fstream>
+#include <string>
 
 vtkStandardNewMacro(vtkSurfaceFileReader);
 
@@ -83,6 +87,12 @@ int vtkSurfaceFileReader::RequestData(
   vtkSmartPointer<vtkAlgorithm> reader;
   if (ext == ".obj")
   {
+    std::ifstream text(name);
+    const std::string problem = medialaxis::CheckObjText(text);
+    if (!problem.empty())
+    {
+      return fail(name + ": " + problem);
+    }
     auto r = vtkSmartPointer<vtkOBJReader>::New();
     r->SetFileName(name.c_str());
     reader = r;

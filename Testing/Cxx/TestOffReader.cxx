@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // OFF reading: polygons kept as polygons, variants, malformed files.
+#include "ObjCheck.h"
 #include "OffFormat.h"
 #include "TestHelpers.h"
 #include "vtkOFFReader.h"
@@ -96,4 +97,27 @@ TEST(OffReader, VtkReaderReportsMalformedFile)
   EXPECT_EQ(errors->Count, 1);
   EXPECT_NE(std::string(reader->GetErrorMessage()).find("broken.off: line 3:"), std::string::npos)
     << reader->GetErrorMessage();
+}
+
+// OBJ files are read by VTK after a strict check of their vertex and face
+// lines, which vtkOBJReader would misread silently.
+TEST(ObjCheck, NamesTheFirstBrokenLine)
+{
+  auto check = [](const std::string& text)
+  {
+    std::istringstream in(text);
+    return medialaxis::CheckObjText(in);
+  };
+  const std::string triangle = "v 0 0 0\nv 1 0 0 1.0\nv 0 1 0 0.5 0.5 0.5\n";
+  EXPECT_EQ(check(triangle + "f 1 2 3\n"), "");
+  EXPECT_EQ(check("# comment\n\n" + triangle + "vt 0 0\nvn 0 0 1\nf 1/1/1 2//1 -1\n"), "");
+  EXPECT_EQ(
+    check("v 0 0 0\nv nan 0 0\n"), "line 2: vertex coordinate 'nan' is not a finite number");
+  EXPECT_EQ(check("v 0 0 1.0x\n"), "line 1: vertex coordinate '1.0x' is not a finite number");
+  EXPECT_EQ(check("v 0 0\n"), "line 1: a vertex needs three coordinates");
+  EXPECT_EQ(check(triangle + "f 1 2\n"), "line 4: a face needs at least three vertices");
+  EXPECT_NE(check(triangle + "f 1 x 3\n").find("line 4: face vertex 'x'"), std::string::npos);
+  EXPECT_NE(check(triangle + "f 0 1 2\n").find("line 4:"), std::string::npos);
+  EXPECT_NE(check(triangle + "f 1 2 4\n").find("(1 to 3)"), std::string::npos);
+  EXPECT_NE(check(triangle + "f -4 1 2\n").find("line 4:"), std::string::npos);
 }

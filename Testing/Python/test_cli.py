@@ -66,6 +66,32 @@ class CommandLineTest(unittest.TestCase):
         self.assertIn("not closed", result.stderr)
         self.assertNotIn("vtkExecutive", result.stderr)  # no VTK log noise
 
+    def test_every_documented_bad_input(self):
+        # Each gives exit code 3 and one line naming the problem; none crashes.
+        cube_v = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+        cube_f = ("f 1 3 4\nf 1 4 2\nf 5 6 8\nf 5 8 7\nf 1 2 6\nf 1 6 5\n"
+                  "f 3 7 8\nf 3 8 4\nf 1 5 7\nf 1 7 3\nf 2 4 8\nf 2 8 6\n")
+        cases = {
+            "empty.obj": ("", "no points"),
+            "open.obj": (cube_v + cube_f.rsplit("f", 1)[0], "not closed"),
+            # A fin: a third triangle on the cube's edge 1-2.
+            "fin.obj": (cube_v + "v 0.5 -1 0\n" + cube_f + "f 1 2 9\n", "more than two triangles"),
+            "nan.obj": (cube_v.replace("v 1 1 1", "v nan 1 1") + cube_f, "NaN"),
+            "bad.off": ("OFF\n8 12\n0 0 0\n", "line"),
+            "bad.obj": (cube_v + "f 1 x 4\n", "line"),
+            "surface.xyz": (cube_v, "extension"),
+        }
+        for name, (text, expected) in cases.items():
+            with open(self.path(name), "w") as f:
+                f.write(text)
+            result = run(self.path(name), self.path("out"))
+            self.assertEqual(result.returncode, 3, name + ": " + result.stderr)
+            self.assertEqual(len(result.stderr.strip().splitlines()), 1, name + ": " + result.stderr)
+            self.assertIn(expected.lower(), result.stderr.lower(), name + ": " + result.stderr)
+        result = run(self.path("does-not-exist.stl"), self.path("out"))
+        self.assertEqual(result.returncode, 3)
+        self.assertIn("no such file", result.stderr)
+
     def test_outputs_and_report(self):
         out = self.path("out")
         report = self.path("report.json")

@@ -372,6 +372,40 @@ void RefineCentreLine(
       fillet.Centres[i] = centres[i];
       continue;
     }
+    if (!fillet.Closed && (before < 0 || after < 0))
+    {
+      // Past the last trusted fit towards an end of the line: continue the
+      // trend of the last two (a radius changing along the line keeps
+      // changing), or copy the last one when there is no second.
+      const long step = before < 0 ? 1 : -1;
+      const long first = before < 0 ? after : before;
+      long second = -1;
+      double between = 0.0;
+      for (long j = first + step; j >= 0 && j < static_cast<long>(n); j += step)
+      {
+        between += Norm(centres[j] - centres[j - step]);
+        if (trusted[j])
+        {
+          second = j;
+          break;
+        }
+      }
+      const double distance = before < 0 ? toAfter : toBefore;
+      const double u = second >= 0 && between > 0.0 ? distance / between : 0.0;
+      const std::size_t f = static_cast<std::size_t>(first);
+      const std::size_t g = static_cast<std::size_t>(second >= 0 ? second : first);
+      if (second >= 0)
+      {
+        const Point3 fittedF = centres[f] + offset[f], fittedG = centres[g] + offset[g];
+        fillet.Centres[i] = fittedF + u * (fittedF - fittedG);
+      }
+      else
+      {
+        fillet.Centres[i] = centres[i] + offset[f];
+      }
+      fillet.Radii[i] = radii[f] + u * (radii[f] - radii[g]);
+      continue;
+    }
     const double w = before < 0 ? 1.0 : (after < 0 ? 0.0 : toBefore / (toBefore + toAfter));
     const std::size_t b =
       before < 0 ? static_cast<std::size_t>(after) : static_cast<std::size_t>(before);

@@ -391,7 +391,9 @@ void RefineCentreLine(
         }
       }
       const double distance = before < 0 ? toAfter : toBefore;
-      const double u = second >= 0 && between > 0.0 ? distance / between : 0.0;
+      // At most as far again as the two fits are apart, and the radius
+      // within half and one and a half times the last fit's.
+      const double u = second >= 0 && between > 0.0 ? std::min(distance / between, 1.0) : 0.0;
       const std::size_t f = static_cast<std::size_t>(first);
       const std::size_t g = static_cast<std::size_t>(second >= 0 ? second : first);
       if (second >= 0)
@@ -403,7 +405,8 @@ void RefineCentreLine(
       {
         fillet.Centres[i] = centres[i] + offset[f];
       }
-      fillet.Radii[i] = radii[f] + u * (radii[f] - radii[g]);
+      fillet.Radii[i] =
+        std::clamp(radii[f] + u * (radii[f] - radii[g]), 0.5 * radii[f], 1.5 * radii[f]);
       continue;
     }
     const double w = before < 0 ? 1.0 : (after < 0 ? 0.0 : toBefore / (toBefore + toAfter));
@@ -811,7 +814,7 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
   {
     const Fillet& fillet = result.Fillets[f];
     const double expected = fillet.Length * fillet.MeanRadius * options.MinimumArcAngle;
-    if (fillet.SurfaceArea >= 0.5 * expected)
+    if (fillet.MinimumRadius > 0.0 && fillet.SurfaceArea >= 0.5 * expected)
     {
       renumber[f] = static_cast<int>(kept.size());
       kept.push_back(fillet);

@@ -5,12 +5,12 @@
 #
 #   scripts/setup.sh            library + Python wrapping + tests, and the ParaView plugin
 #   scripts/setup.sh --library  library + Python wrapping + tests only
-#   scripts/setup.sh --robustness  also the sanitizer build
+#   scripts/setup.sh --robustness  also the sanitizer and fuzzing builds
 #
 # Build folders: $MEDIALAXIS_BUILD_DIR (default: build/ in the source tree),
 # with vtk/ (Debian's VTK 9.1) and paraview/ (ParaView 5.11's VTK, the plugin);
 # with --robustness also asan/ (library + C++ tests with AddressSanitizer and
-# UndefinedBehaviorSanitizer).
+# UndefinedBehaviorSanitizer) and fuzz/ (libFuzzer targets, clang).
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -31,6 +31,9 @@ packages=(cmake ninja-build g++ ccache pkg-config libvtk9-dev python3-vtk9 libcg
 if [ "$with_paraview" = 1 ]; then
   # Never python3-paraview: it conflicts with python3-vtk9 (see make-paraview-sdk.sh).
   packages+=(paraview paraview-dev xvfb xauth)
+fi
+if [ "$with_robustness" = 1 ]; then
+  packages+=(clang-14 libclang-rt-14-dev) # libFuzzer and clang's sanitizer runtimes
 fi
 
 missing=()
@@ -81,5 +84,11 @@ if [ "$with_robustness" = 1 ]; then
     -DMEDIALAXIS_SANITIZE=ON -DMEDIALAXIS_WRAP_PYTHON=OFF -DMEDIALAXIS_BUILD_EXAMPLES=OFF \
     -DMEDIALAXIS_BUILD_BENCHMARKS=OFF -DPython3_EXECUTABLE=/usr/bin/python3 "${launcher[@]}" >/dev/null
   cmake --build "$build/asan"
+  # -O1 with assertions (no NDEBUG): faster to build, checks stay on.
+  echo "== building the fuzz targets in $build/fuzz"
+  cmake -S "$root" -B "$build/fuzz" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DMEDIALAXIS_FUZZ=ON "${launcher[@]}" >/dev/null
+  cmake --build "$build/fuzz"
 fi
 echo "== setup done"

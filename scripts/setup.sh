@@ -5,18 +5,23 @@
 #
 #   scripts/setup.sh            library + Python wrapping + tests, and the ParaView plugin
 #   scripts/setup.sh --library  library + Python wrapping + tests only
+#   scripts/setup.sh --robustness  also the sanitizer and fuzzing builds
 #
 # Build folders: $MEDIALAXIS_BUILD_DIR (default: build/ in the source tree),
-# with vtk/ (Debian's VTK 9.1) and paraview/ (ParaView 5.11's VTK, the plugin).
+# with vtk/ (Debian's VTK 9.1) and paraview/ (ParaView 5.11's VTK, the plugin);
+# with --robustness also asan/ (library + C++ tests with AddressSanitizer and
+# UndefinedBehaviorSanitizer) and fuzz/ (libFuzzer targets, clang).
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${MEDIALAXIS_BUILD_DIR:-$root/build}
 with_paraview=1
+with_robustness=0
 for arg in "$@"; do
   case "$arg" in
     --library) with_paraview=0 ;;
-    -h|--help) sed -n '3,10p' "$0"; exit 0 ;;
+    --robustness) with_robustness=1 ;;
+    -h|--help) sed -n '3,13p' "$0"; exit 0 ;;
     *) echo "setup.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac
 done
@@ -26,6 +31,9 @@ packages=(cmake ninja-build g++ ccache pkg-config libvtk9-dev python3-vtk9 libcg
 if [ "$with_paraview" = 1 ]; then
   # Never python3-paraview: it conflicts with python3-vtk9 (see make-paraview-sdk.sh).
   packages+=(paraview paraview-dev)
+fi
+if [ "$with_robustness" = 1 ]; then
+  packages+=(clang-14 libclang-rt-14-dev) # libFuzzer and clang's sanitizer runtimes
 fi
 
 missing=()
@@ -68,5 +76,19 @@ if [ "$with_paraview" = 1 ]; then
     -DMEDIALAXIS_PARAVIEW_PYTHONPATH="$sdk/lib/python3/dist-packages" \
     -DPython3_EXECUTABLE=/usr/bin/python3 "${launcher[@]}" >/dev/null
   cmake --build "$build/paraview"
+fi
+if [ "$with_robustness" = 1 ]; then
+  # No Python wrapping, examples or benchmarks: the C++ tests are what runs here.
+  echo "== building the library and C++ tests with ASan + UBSan in $build/asan"
+  cmake -S "$root" -B "$build/asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DMEDIALAXIS_SANITIZE=ON -DMEDIALAXIS_WRAP_PYTHON=OFF -DMEDIALAXIS_BUILD_EXAMPLES=OFF \
+    -DMEDIALAXIS_BUILD_BENCHMARKS=OFF -DPython3_EXECUTABLE=/usr/bin/python3 "${launcher[@]}" >/dev/null
+  cmake --build "$build/asan"
+  # -O1 with assertions (no NDEBUG): faster to build, checks stay on.
+  echo "== building the fuzz targets in $build/fuzz"
+  cmake -S "$root" -B "$build/fuzz" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DMEDIALAXIS_FUZZ=ON "${launcher[@]}" >/dev/null
+  cmake --build "$build/fuzz"
 fi
 echo "== setup done"

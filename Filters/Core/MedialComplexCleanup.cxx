@@ -83,7 +83,9 @@ std::size_t CollapseFlaggedTriangles(
     (void)count;
     return std::make_pair(std::move(start), std::move(items));
   };
-  const auto [faceStart, vertexFaces] = buildRows(3 * nf,
+  // Plain references, not structured bindings: C++17 does not let lambdas
+  // capture those (GCC allows it, clang refuses).
+  const auto faceRows = buildRows(3 * nf,
     [&mesh](auto&& add)
     {
       for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
@@ -94,7 +96,7 @@ std::size_t CollapseFlaggedTriangles(
         }
       }
     });
-  const auto [lineStart, vertexLines] = buildRows(2 * mesh.Edges.size(),
+  const auto lineRows = buildRows(2 * mesh.Edges.size(),
     [&mesh](auto&& add)
     {
       for (std::size_t e = 0; e < mesh.Edges.size(); ++e)
@@ -103,6 +105,10 @@ std::size_t CollapseFlaggedTriangles(
         add(mesh.Edges[e][1], static_cast<Index>(e));
       }
     });
+  const std::vector<std::size_t>& faceStart = faceRows.first;
+  const std::vector<Index>& vertexFaces = faceRows.second;
+  const std::vector<std::size_t>& lineStart = lineRows.first;
+  const std::vector<Index>& vertexLines = lineRows.second;
 
   std::vector<char> faceAlive(nf, 1), edgeAlive(mesh.Edges.size(), 1);
   std::vector<int> aliveFaces(nv, 0);

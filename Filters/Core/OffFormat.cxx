@@ -113,7 +113,7 @@ OffReadResult ParseOff(std::istream& input)
       return fail(
         lineNumber, "polygon size '" + std::string(tokens[0]) + "' is not a positive integer");
     }
-    if (static_cast<std::int64_t>(tokens.size()) < n + 1)
+    if (static_cast<std::int64_t>(tokens.size()) - 1 < n) // not n + 1: n may be INT64_MAX
     {
       return fail(lineNumber,
         "polygon announces " + std::to_string(n) + " vertices but lists " +

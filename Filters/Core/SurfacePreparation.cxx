@@ -119,22 +119,26 @@ std::vector<Index> MergeCoincidentPoints(
   return representative;
 }
 
-// Replaces zero-area "needle" triangles (three distinct but collinear
-// vertices, common in CAD exports) by splitting the neighbour across their
-// longest edge at the middle vertex, which keeps the surface closed.
+// A zero-area "needle": three distinct but (nearly) collinear vertices.
+bool IsNeedle(const std::vector<Point3>& points, const Triangle& tri)
+{
+  const Point3 e0 = (points[tri[1]] - points[tri[0]]);
+  const Point3 e1 = (points[tri[2]] - points[tri[0]]);
+  const Point3 e2 = (points[tri[2]] - points[tri[1]]);
+  const double longest = std::max({ Dot(e0, e0), Dot(e1, e1), Dot(e2, e2) });
+  return Norm(Cross(e0, e1)) <= 1e-12 * longest;
+}
+
+// Replaces needles (common in CAD exports) by splitting the neighbour across
+// their longest edge at the middle vertex, which keeps the surface closed.
 // Returns the number of needles removed; unresolvable needles are kept.
-std::size_t RemoveNeedles(
+std::size_t AbsorbNeedles(
   const std::vector<Point3>& points, std::vector<Triangle>& triangles, std::size_t& splitNeighbours)
 {
   std::vector<std::size_t> needles;
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
-    const Triangle& tri = triangles[t];
-    const Point3 e0 = (points[tri[1]] - points[tri[0]]);
-    const Point3 e1 = (points[tri[2]] - points[tri[0]]);
-    const Point3 e2 = (points[tri[2]] - points[tri[1]]);
-    const double longest = std::max({ Dot(e0, e0), Dot(e1, e1), Dot(e2, e2) });
-    if (Norm(Cross(e0, e1)) <= 1e-12 * longest)
+    if (IsNeedle(points, triangles[t]))
     {
       needles.push_back(t);
     }
@@ -220,6 +224,31 @@ std::size_t RemoveNeedles(
   kept.insert(kept.end(), added.begin(), added.end());
   triangles.swap(kept);
   return removed;
+}
+
+// Absorbs needles until none is left or no progress is made (splitting a
+// neighbour that is itself nearly flat makes new needles), then drops the
+// rest: no later stage may see a zero-area triangle (CGAL's intersection
+// tests require non-degenerate ones). Dropping can open the surface, which
+// the closedness check then reports.
+std::size_t RemoveNeedles(
+  const std::vector<Point3>& points, std::vector<Triangle>& triangles, std::size_t& splitNeighbours)
+{
+  std::size_t removed = 0;
+  for (int round = 0; round < 8; ++round)
+  {
+    const std::size_t absorbed = AbsorbNeedles(points, triangles, splitNeighbours);
+    removed += absorbed;
+    if (absorbed == 0)
+    {
+      break;
+    }
+  }
+  const std::size_t before = triangles.size();
+  triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
+                    [&points](const Triangle& t) { return IsNeedle(points, t); }),
+    triangles.end());
+  return removed + (before - triangles.size());
 }
 
 // Generalised winding number of point p with respect to a set of triangles

@@ -12,9 +12,12 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Cartesian_converter.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
@@ -50,6 +53,26 @@ Point3 ToPoint(const KPoint& p)
 KPoint ToKernel(const Point3& p)
 {
   return { p[0], p[1], p[2] };
+}
+
+// The circumcentre of a Delaunay cell. CGAL's inexact construction divides
+// by a determinant that must not be zero; a sliver that is flat to double
+// precision (four sites of a planar face, rounded slightly off it) makes it
+// exactly zero, so those few are constructed exactly. Exact predicates keep
+// finite cells of a 3D triangulation from being truly flat.
+Point3 Circumcentre(const KPoint& p, const KPoint& q, const KPoint& r, const KPoint& s)
+{
+  double nx, ny, nz, den;
+  CGAL::determinants_for_circumcenterC3(p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), r.x(), r.y(),
+    r.z(), s.x(), s.y(), s.z(), nx, ny, nz, den);
+  if (den != 0.0)
+  {
+    return ToPoint(CGAL::circumcenter(p, q, r, s));
+  }
+  using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+  const CGAL::Cartesian_converter<K, Exact> toExact;
+  const Exact::Point_3 c = CGAL::circumcenter(toExact(p), toExact(q), toExact(r), toExact(s));
+  return { CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z()) };
 }
 
 // Surface queries: inside test by ray casting and distance to the surface,
@@ -268,8 +291,8 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
           cellSites[c][k] = cell->vertex(k)->info();
           cellNeighbours[c][k] = cell->neighbor(k)->info();
         }
-        centre[c] = ToPoint(CGAL::circumcenter(cell->vertex(0)->point(), cell->vertex(1)->point(),
-          cell->vertex(2)->point(), cell->vertex(3)->point()));
+        centre[c] = Circumcentre(cell->vertex(0)->point(), cell->vertex(1)->point(),
+          cell->vertex(2)->point(), cell->vertex(3)->point());
       }
     });
   std::vector<Delaunay::Cell_handle>().swap(cells);
@@ -315,6 +338,8 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   // ball's centre can be behind all four tangent planes and still outside,
   // past another part of the surface.
   constexpr double clearCosine = 0.1;
+  const std::pair<Point3, Point3> box = BoundingBox(surface.Points);
+  const Point3 &lo = box.first, &hi = box.second; // no structured bindings: captured below
   const double smallRadius =
     4.0 * std::sqrt(2.0 * SurfaceArea(surface) / (std::sqrt(3.0) * sites.size()));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 1024),
@@ -323,9 +348,13 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       for (std::size_t c = r.begin(); c != r.end(); ++c)
       {
         const Point3& x = centre[c];
-        if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+        // Outside the surface's bounding box is outside. That also keeps the
+        // far circumcentres of slivers (up to overflow) away from the
+        // distance computations below, which would overflow on them.
+        if (!(x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1] && x[2] >= lo[2] &&
+              x[2] <= hi[2]))
         {
-          continue; // a flat cell's circumcentre overflowed: far outside
+          continue;
         }
         int behind = 0, front = 0;
         for (int k = 0; k < 4; ++k)

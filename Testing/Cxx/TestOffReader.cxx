@@ -62,6 +62,9 @@ TEST(OffReader, MalformedFiles)
     { "OFF\n3 1 0\n0 0 0\n1 0 0\n0 one 0\n3 0 1 2\n", "line 5: 'one' is not a number" },
     { "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "line 6: vertex index 3 is outside [0, 3)" },
     { "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n", "line 6: polygon announces 4" },
+    // The largest polygon size once overflowed the token count check.
+    { "OFF\n1 1 0\n0 0 0\n9223372036854775807 0\n",
+      "line 4: polygon announces 9223372036854775807 vertices but lists 1" },
     { "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "line 6: end of file after 1 of 2 polygons" },
     { "OFF BINARY\n", "binary OFF files are not supported" } };
   for (const Case& c : cases)

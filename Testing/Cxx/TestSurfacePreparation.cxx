@@ -211,6 +211,26 @@ TEST(SurfacePreparation, ZeroAreaNeedleIsAbsorbed)
   EXPECT_NEAR(r.Area, 6.0, 1e-12);
 }
 
+// Found by fuzzing: four vertices on one line (0, 0, z) make two needles
+// that share their longest edge, so neither can absorb the other, and
+// splitting one made new needles. Zero-area triangles reached CGAL, whose
+// intersection tests require non-degenerate ones. Now none is ever kept.
+TEST(SurfacePreparation, NeedlesThatCannotBeAbsorbedAreNotKept)
+{
+  TriangleMesh mesh;
+  mesh.Points = { { 1, 1.984375, 0 }, { 0, 0, 2.109375 }, { 0, 0, 0 }, { 4.21875, 0, 0 },
+    { 0, 0, 1 }, { 0, 0, -1 } };
+  mesh.Triangles = { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 }, { 2, 0, 5 }, { 1, 2, 5 },
+    { 3, 1, 5 }, { 0, 3, 5 } };
+  TriangleMesh out;
+  const auto r = Prepare(mesh, out);
+  // Without its flat triangles the rest is open: a clear error, not a
+  // surface with zero-area triangles.
+  EXPECT_EQ(r.DegenerateTriangles, 3u);
+  EXPECT_FALSE(r.Ok());
+  EXPECT_NE(r.Error.find("surface is not closed: 2 boundary edges"), std::string::npos) << r.Error;
+}
+
 TEST(SurfacePreparation, SeveralComponentsAreAllowed)
 {
   TriangleMesh out;

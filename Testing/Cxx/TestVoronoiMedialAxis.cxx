@@ -280,6 +280,80 @@ TEST(VoronoiMedialAxis, IdenticalAcrossRunsAndThreads)
   EXPECT_EQ(one.Mat.AtlasSites, two.Mat.AtlasSites);
 }
 
+// Scaling by a power of two is exact in floating point, so the medial mesh
+// of a scaled surface and sites must be the scaled medial mesh, bit for bit,
+// however far from unit size (1e-60 and 1e60 here).
+TEST(VoronoiMedialAxis, TinyAndHugeScalesGiveTheScaledResult)
+{
+  const TriangleMesh mesh = MakeRoundedBox({ 2, 1.5, 1 }, 0.25, 8);
+  const Pipeline unit = RunPipeline(mesh, 2000);
+  ASSERT_GT(unit.Mat.Mesh.Centers.size(), 100u);
+  auto scaled = [](Point3 p, int e)
+  {
+    for (double& c : p)
+    {
+      c = std::ldexp(c, e);
+    }
+    return p;
+  };
+  for (int e : { -200, 200 })
+  {
+    SCOPED_TRACE(e);
+    TriangleMesh big = mesh;
+    for (Point3& p : big.Points)
+    {
+      p = scaled(p, e);
+    }
+    std::vector<Point3> sites = unit.Sites.Points;
+    for (Point3& p : sites)
+    {
+      p = scaled(p, e);
+    }
+    const VoronoiMedialAxisResult mat =
+      ComputeVoronoiMedialAxis(big, sites, unit.Sites.TriangleIds, unit.Rvd.ConcaveFeature);
+    const MedialMesh& a = unit.Mat.Mesh;
+    const MedialMesh& b = mat.Mesh;
+    ASSERT_EQ(a.Centers.size(), b.Centers.size());
+    for (std::size_t v = 0; v < a.Centers.size(); ++v)
+    {
+      ASSERT_EQ(scaled(a.Centers[v], e), b.Centers[v]) << "vertex " << v;
+      ASSERT_EQ(std::ldexp(a.Radii[v], e), b.Radii[v]) << "vertex " << v;
+    }
+    EXPECT_EQ(a.Faces, b.Faces);
+    EXPECT_EQ(a.Edges, b.Edges);
+    EXPECT_EQ(unit.Mat.AtlasSites, mat.AtlasSites);
+  }
+}
+
+// Found by fuzzing: a 1e-30 cube with one coordinate denormal (2e-314)
+// tilts a face by 1e-284, and its sites' Delaunay slivers are flat to
+// double precision. Their circumcentres, constructed exactly, lie ~1e253
+// away and must be told outside without overflowing the distance tests
+// (which crashed in GMP on them).
+TEST(VoronoiMedialAxis, TinyCubeWithADenormalCoordinate)
+{
+  TriangleMesh soup = test::UnitCube({ 0, 0, 0 }, 1e-30);
+  soup.Points[3][2] = 2.121995791e-314;
+  soup.Points[6][1] = 9.999999999770412e-31;
+  TriangleMesh cube;
+  ASSERT_TRUE(PrepareSurface(soup, cube).Ok());
+  const Pipeline p = RunPipeline(cube, 200);
+  const MedialMesh& m = p.Mat.Mesh;
+  ASSERT_FALSE(m.Centers.empty());
+  EXPECT_TRUE(ValidateMedialMesh(m).IsValid()) << ValidateMedialMesh(m).Message;
+  for (std::size_t v = 0; v < m.Centers.size(); ++v)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_GE(m.Centers[v][k], -1e-45);
+      EXPECT_LE(m.Centers[v][k], 1e-30 + 1e-45);
+    }
+    // A ball centred in the cube through surface points: at most the
+    // half-diagonal.
+    EXPECT_LE(m.Radii[v], 0.87e-30);
+  }
+}
+
 TEST(VoronoiMedialAxisFilter, PipelineOutputsTheContract)
 {
   vtkNew<vtkAnalyticShapeSource> shape;

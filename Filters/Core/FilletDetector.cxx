@@ -60,6 +60,25 @@ Lists TrianglesOfSites(std::size_t sites, const std::vector<Index>& polygonSite,
   return lists;
 }
 
+// The surface triangles the Atlases of medial vertices [first, last) touch,
+// each once, in increasing order, into `triangles`.
+void AtlasTriangles(const Index* first, const Index* last, const std::vector<Index>& atlasOffsets,
+  const std::vector<Index>& atlasSites, const Lists& siteTriangles, std::vector<Index>& triangles)
+{
+  triangles.clear();
+  for (const Index* v = first; v != last; ++v)
+  {
+    for (Index k = atlasOffsets[*v]; k < atlasOffsets[*v + 1]; ++k)
+    {
+      const Index site = atlasSites[k];
+      triangles.insert(triangles.end(), siteTriangles.Items.begin() + siteTriangles.Offsets[site],
+        siteTriangles.Items.begin() + siteTriangles.Offsets[site + 1]);
+    }
+  }
+  std::sort(triangles.begin(), triangles.end());
+  triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+}
+
 struct SurfaceTriangle
 {
   Point3 Centroid;
@@ -490,18 +509,8 @@ EdgeVerdict JudgeEdge(Index a, Index b, const MedialMesh& medial,
   {
     return EdgeVerdict::Rejected;
   }
-  scratch.clear();
-  for (Index v : { a, b })
-  {
-    for (Index k = atlasOffsets[v]; k < atlasOffsets[v + 1]; ++k)
-    {
-      const Index site = atlasSites[k];
-      scratch.insert(scratch.end(), siteTriangles.Items.begin() + siteTriangles.Offsets[site],
-        siteTriangles.Items.begin() + siteTriangles.Offsets[site + 1]);
-    }
-  }
-  std::sort(scratch.begin(), scratch.end());
-  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+  const Index ends[2] = { a, b };
+  AtlasTriangles(ends, ends + 2, atlasOffsets, atlasSites, siteTriangles, scratch);
   double inSpan = 0.0, matching = 0.0;
   std::vector<double> around; // angles of the matching normals around the axis
   Point3 points[PointsPerTriangle];
@@ -747,17 +756,8 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
   {
     Fillet& fillet = result.Fillets[f];
     std::vector<Index> seeds;
-    for (Index v : fillet.Vertices)
-    {
-      for (Index k = atlasOffsets[v]; k < atlasOffsets[v + 1]; ++k)
-      {
-        const Index site = atlasSites[k];
-        seeds.insert(seeds.end(), siteTriangles.Items.begin() + siteTriangles.Offsets[site],
-          siteTriangles.Items.begin() + siteTriangles.Offsets[site + 1]);
-      }
-    }
-    std::sort(seeds.begin(), seeds.end());
-    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    AtlasTriangles(fillet.Vertices.data(), fillet.Vertices.data() + fillet.Vertices.size(),
+      atlasOffsets, atlasSites, siteTriangles, seeds);
 
     const CentreLineEnvelope loose(fillet.Centres, fillet.Radii, fillet.Closed, reach, cosNormal);
     const std::vector<Index> found = grow(seeds,

@@ -10,6 +10,8 @@
 
 #include "MedialMesh.h" // Point3
 
+#include <Eigen/Dense>
+
 #include <array>
 
 namespace medialaxis
@@ -90,6 +92,33 @@ struct alignas(64) SphereQuadric
     return e;
   }
 };
+
+/// Solves the top-left N x N block of the quadric's system A x = B (the
+/// minimiser over the first N coordinates). A is a sum of outer products:
+/// symmetric positive semi-definite, so LDL^T, refusing nearly singular
+/// systems (false).
+template <int N>
+bool SolveQuadric(const SphereQuadric& q, Eigen::Matrix<double, N, 1>& x)
+{
+  Eigen::Matrix<double, N, N> A;
+  Eigen::Matrix<double, N, 1> B;
+  for (int i = 0; i < N; ++i)
+  {
+    for (int j = 0; j < N; ++j)
+    {
+      A(i, j) = q.A(i, j);
+    }
+    B[i] = q.B(i);
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, N, N>> ldlt(A);
+  const Eigen::Matrix<double, N, 1> pivots = ldlt.vectorD().cwiseAbs();
+  if (ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff()))
+  {
+    return false;
+  }
+  x = ldlt.solve(B);
+  return x.allFinite();
+}
 }
 
 #endif

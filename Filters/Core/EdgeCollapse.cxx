@@ -1,0 +1,792 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "EdgeCollapse.h"
+
+#include "MedialMeshQuality.h"
+#include "Vec3.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <iterator>
+
+namespace medialaxis
+{
+namespace
+{
+// Zero area up to rounding: twice the area at most 1e-10 x the longest edge
+// squared (the sine of the largest angle below 1e-10).
+bool IsDegenerate(const Point3& p, const Point3& q, const Point3& r)
+{
+  const double longest = std::max({ Distance2(p, q), Distance2(q, r), Distance2(r, p) });
+  return !(Norm(Cross(q - p, r - p)) > 1e-10 * longest);
+}
+}
+
+MedialEdgeCollapse::MedialEdgeCollapse(const MedialMesh& input, const Normalisation& frame,
+  const EdgeCollapseOptions& options, CollapsePolicy& policy)
+  : Options(options)
+  , Policy(policy)
+  , UnitFrame(frame)
+  , Queue(
+      [this](const Candidate& c)
+      {
+        return this->VertexAlive[c.A] && this->VertexAlive[c.B] &&
+          c.VersionA == this->Version[c.A] && c.VersionB == this->Version[c.B];
+      })
+{
+  this->FoldGuard = options.PreventFolds;
+  const std::size_t nv = input.Centers.size();
+  this->Spheres.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    const Point3 c = frame.To(input.Centers[v]);
+    this->Spheres[v] = { c[0], c[1], c[2], input.Radii[v] * frame.Scale };
+  }
+  this->VertexNeighbours.assign(nv, {});
+  this->VertexFaces.assign(nv, {});
+  auto link = [this](Index a, Index b)
+  {
+    this->VertexNeighbours[a].push_back(b);
+    this->VertexNeighbours[b].push_back(a);
+  };
+  for (const auto& e : input.Edges)
+  {
+    link(e[0], e[1]);
+  }
+  this->Faces = input.Faces;
+  this->FaceAlive.assign(this->Faces.size(), 1);
+  for (std::size_t f = 0; f < this->Faces.size(); ++f)
+  {
+    const auto& t = this->Faces[f];
+    link(t[0], t[1]);
+    link(t[1], t[2]);
+    link(t[2], t[0]);
+    for (Index v : t)
+    {
+      this->VertexFaces[v].push_back(static_cast<Index>(f));
+    }
+  }
+  for (auto& n : this->VertexNeighbours)
+  {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  this->Version.assign(nv, 0);
+  this->VertexAlive.assign(nv, 1);
+  this->NumberAlive = nv;
+}
+
+double MedialEdgeCollapse::StabilityRatio(Index a, Index b) const
+{
+  const Sphere &p = this->Spheres[a], &q = this->Spheres[b];
+  const double d = Norm(Point3{ p[0] - q[0], p[1] - q[1], p[2] - q[2] });
+  if (!(d > 0.0))
+  {
+    return 0.0;
+  }
+  return std::max(0.0, d - std::fabs(p[3] - q[3])) / d;
+}
+
+std::size_t MedialEdgeCollapse::MergedRingSums(
+  Index a, Index b, Point3& sum, double& sumSquares) const
+{
+  // Both lists are sorted: merge them, shared neighbours once.
+  const auto& na = this->VertexNeighbours[a];
+  const auto& nb = this->VertexNeighbours[b];
+  std::size_t count = 0;
+  std::size_t i = 0, j = 0;
+  while (i < na.size() || j < nb.size())
+  {
+    Index u;
+    if (j == nb.size() || (i < na.size() && na[i] < nb[j]))
+    {
+      u = na[i++];
+    }
+    else if (i == na.size() || nb[j] < na[i])
+    {
+      u = nb[j++];
+    }
+    else
+    {
+      u = na[i++];
+      ++j;
+    }
+    if (u != a && u != b)
+    {
+      const Point3 p = this->Position(u);
+      sum = sum + p;
+      sumSquares += Dot(p, p);
+      ++count;
+    }
+  }
+  return count;
+}
+
+MedialEdgeCollapse::Candidate MedialEdgeCollapse::MakeCandidate(
+  Index a, Index b, CollapseScratch& scratch) const
+{
+  if (a > b)
+  {
+    std::swap(a, b);
+  }
+  const CollapsePolicy::Evaluation e = this->Policy.Evaluate(*this, a, b, scratch);
+  return { e.Cost, a, b, this->Version[a], this->Version[b], e.Target };
+}
+
+void MedialEdgeCollapse::Push(Index a, Index b)
+{
+  const Candidate c = this->MakeCandidate(a, b, this->Scratch);
+  if (c.Cost < HUGE_VAL)
+  {
+    this->Queue.Push(c);
+  }
+}
+
+bool MedialEdgeCollapse::LinkConditionHolds(Index a, Index b) const
+{
+  // Dey's vertex condition: the common neighbours of a and b must be exactly
+  // the apices of faces (a, b, x). With FringeCollapses, where it fails the
+  // collapse is still taken when it keeps the Euler characteristic: every
+  // extra common neighbour x closes the loop (a, b, x), raising the
+  // characteristic by one, and every face pair (a, x, y), (b, x, y) that
+  // merges lowers it by one (e.g. the fins of a fringe along a fillet's
+  // centre line, where (a, x, y), (b, x, y) and (a, b, x) form a disk).
+  Index apices[16];
+  std::size_t apexCount = 0;
+  for (Index f : this->VertexFaces[a])
+  {
+    const auto& t = this->Faces[f];
+    if (this->FaceAlive[f] && (t[0] == b || t[1] == b || t[2] == b))
+    {
+      const Index x = t[0] != a && t[0] != b ? t[0] : (t[1] != a && t[1] != b ? t[1] : t[2]);
+      if (apexCount < 16)
+      {
+        apices[apexCount++] = x;
+      }
+      else
+      {
+        return false; // an edge in more than 16 faces: too tangled to collapse
+                      // safely
+      }
+    }
+  }
+  const auto& na = this->VertexNeighbours[a];
+  const auto& nb = this->VertexNeighbours[b];
+  std::size_t extra = 0;
+  std::size_t i = 0, j = 0;
+  while (i < na.size() && j < nb.size())
+  {
+    if (na[i] < nb[j])
+    {
+      ++i;
+    }
+    else if (nb[j] < na[i])
+    {
+      ++j;
+    }
+    else
+    {
+      extra += std::find(apices, apices + apexCount, na[i]) == apices + apexCount ? 1 : 0;
+      ++i;
+      ++j;
+    }
+  }
+  if (extra == 0)
+  {
+    return true;
+  }
+  if (!this->Options.FringeCollapses ||
+    this->NumberAlive <= this->Options.StrictLinkConditionVertexCount)
+  {
+    return false;
+  }
+  std::size_t merges = 0;
+  for (Index f : this->VertexFaces[b])
+  {
+    const auto& t = this->Faces[f];
+    if (!this->FaceAlive[f] || t[0] == a || t[1] == a || t[2] == a)
+    {
+      continue;
+    }
+    const int k = t[0] == b ? 0 : (t[1] == b ? 1 : 2);
+    const Index x = t[(k + 1) % 3], y = t[(k + 2) % 3];
+    for (Index g : this->VertexFaces[a])
+    {
+      const auto& u = this->Faces[g];
+      if (this->FaceAlive[g] && (u[0] == x || u[1] == x || u[2] == x) &&
+        (u[0] == y || u[1] == y || u[2] == y))
+      {
+        ++merges;
+        break;
+      }
+    }
+  }
+  return extra == merges;
+}
+
+// Merges b into a at `target` if the result stays a valid medial mesh (the
+// caller has checked the link condition).
+bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target)
+{
+  const Point3 newPosition{ target[0], target[1], target[2] };
+  auto position = [this](Index v) {
+    return Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
+  };
+  // Removing an unstable spike edge turns its needle triangles in any
+  // direction: the flip test is meaningless there and only guards stable
+  // parts of the medial mesh.
+  const bool spike = this->StabilityRatio(a, b) < this->Options.SpikeThreshold;
+  // Faces that survive: no zero area and no flip (for faces that had a
+  // well-defined normal). Two faces that become one are merged. With the
+  // vertex part of the link condition holding, that only happens when
+  // (a, b, x, y) bound a tetrahedral bubble, which the merge removes: the
+  // edge part of Dey's link condition is relaxed on purpose, since a bubble
+  // in the medial axis of a solid without cavities is always spurious.
+  auto& keys = this->FaceKeys;
+  keys.clear();
+  for (Index v : { a, b })
+  {
+    for (Index f : this->VertexFaces[v])
+    {
+      if (!this->FaceAlive[f])
+      {
+        continue;
+      }
+      const auto& t = this->Faces[f];
+      const bool hasA = t[0] == a || t[1] == a || t[2] == a;
+      const bool hasB = t[0] == b || t[1] == b || t[2] == b;
+      if (hasA && hasB)
+      {
+        continue; // vanishes with the edge
+      }
+      if (v == b && hasA)
+      {
+        continue; // seen from a
+      }
+      std::array<Index, 3> after = t;
+      Point3 before[3], moved[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        before[k] = position(t[k]);
+        moved[k] = (t[k] == a || t[k] == b) ? newPosition : before[k];
+        if (after[k] == b)
+        {
+          after[k] = a;
+        }
+      }
+      const Point3 n0 = Cross(before[1] - before[0], before[2] - before[0]);
+      const Point3 n1 = Cross(moved[1] - moved[0], moved[2] - moved[0]);
+      const double l0 = std::max({ Distance2(before[0], before[1]), Distance2(before[1], before[2]),
+        Distance2(before[2], before[0]) });
+      if (IsDegenerate(moved[0], moved[1], moved[2]))
+      {
+        return false; // would be degenerate
+      }
+      if (!spike && Norm(n0) > 1e-6 * l0 && Dot(n0, n1) <= 0.0)
+      {
+        return false; // would flip
+      }
+      std::sort(after.begin(), after.end());
+      keys.emplace_back(after, f);
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  auto& mergedAway = this->MergedAway;
+  mergedAway.clear();
+  for (std::size_t i = 1; i < keys.size(); ++i)
+  {
+    if (keys[i].first == keys[i - 1].first)
+    {
+      mergedAway.push_back(keys[i].second);
+    }
+  }
+
+  if (this->FoldGuard && this->CreatesFold(a, b, newPosition))
+  {
+    return false;
+  }
+
+  // Apply.
+  for (Index f : mergedAway)
+  {
+    this->FaceAlive[f] = 0;
+  }
+  this->Counts.MergedFaces += mergedAway.size();
+  for (Index f : this->VertexFaces[b])
+  {
+    if (!this->FaceAlive[f])
+    {
+      continue;
+    }
+    auto& t = this->Faces[f];
+    if (t[0] == a || t[1] == a || t[2] == a)
+    {
+      this->FaceAlive[f] = 0;
+      continue;
+    }
+    for (Index& v : t)
+    {
+      v = v == b ? a : v;
+    }
+    this->VertexFaces[a].push_back(f);
+  }
+  auto& faces = this->VertexFaces[a];
+  faces.erase(
+    std::remove_if(faces.begin(), faces.end(), [this](Index f) { return !this->FaceAlive[f]; }),
+    faces.end());
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  for (Index u : this->VertexNeighbours[b])
+  {
+    auto& n = this->VertexNeighbours[u];
+    n.erase(std::lower_bound(n.begin(), n.end(), b));
+    if (u != a)
+    {
+      n.insert(std::lower_bound(n.begin(), n.end(), a), a);
+      n.erase(std::unique(n.begin(), n.end()), n.end());
+    }
+  }
+  auto& merged = this->MergedNeighbours;
+  merged.clear();
+  std::set_union(this->VertexNeighbours[a].begin(), this->VertexNeighbours[a].end(),
+    this->VertexNeighbours[b].begin(), this->VertexNeighbours[b].end(), std::back_inserter(merged));
+  merged.erase(
+    std::remove_if(merged.begin(), merged.end(), [a, b](Index u) { return u == a || u == b; }),
+    merged.end());
+  this->VertexNeighbours[a].swap(merged); // the old list becomes the next scratch
+  std::vector<Index>().swap(this->VertexNeighbours[b]);
+  std::vector<Index>().swap(this->VertexFaces[b]);
+
+  this->Spheres[a] = target;
+  this->VertexAlive[b] = 0;
+  --this->NumberAlive;
+  ++this->Version[a];
+  ++this->Version[b];
+  this->Policy.Merged(*this, a, b);
+  return true;
+}
+
+// Folded manifold edges among the edges of the `centre` faces, with the
+// faces across them taken from `centre` and this->Outer; vertex `moved` sits
+// at `movedTo`.
+std::size_t MedialEdgeCollapse::CountFolds(
+  const std::vector<std::array<Index, 3>>& centre, Index moved, const Point3& movedTo)
+{
+  auto position = [&](Index v)
+  {
+    return v == moved ? movedTo
+                      : Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
+  };
+  auto& incidences = this->EdgeIncidences;
+  incidences.clear();
+  auto add = [&incidences](const std::vector<std::array<Index, 3>>& faces, Index isCentre)
+  {
+    for (const auto& t : faces)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Index u = t[k], v = t[(k + 1) % 3];
+        incidences.push_back({ std::min(u, v), std::max(u, v), t[(k + 2) % 3], isCentre });
+      }
+    }
+  };
+  add(centre, 1);
+  add(this->Outer, 0);
+  std::sort(incidences.begin(), incidences.end());
+  std::size_t folds = 0;
+  for (std::size_t i = 0; i < incidences.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < incidences.size() && incidences[j][0] == incidences[i][0] &&
+      incidences[j][1] == incidences[i][1])
+    {
+      ++j;
+    }
+    const auto &p = incidences[i], &q = incidences[i + 1];
+    if (j - i == 2 && (p[3] || q[3]) &&
+      IsFold(position(p[0]), position(p[1]), position(p[2]), position(q[2])))
+    {
+      ++folds;
+    }
+    i = j;
+  }
+  return folds;
+}
+
+// Folded edges around a after merging b into it at `newPosition`, from the
+// collapse's face keys. Every face around a is then (a, u, v): spokes (a, u)
+// lie between two such faces, ring edges (u, v) between one and the faces
+// across that do not move. A fast path for the common case (no fold): no
+// sorting, and the pre-collapse state is looked at only when needed.
+std::size_t MedialEdgeCollapse::FoldsAroundMerged(Index a, Index b, const Point3& newPosition)
+{
+  auto position = [this](Index v) {
+    return Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
+  };
+  auto& ring = this->RingPairs;
+  ring.clear();
+  const auto& keys = this->FaceKeys;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+  {
+    if (i > 0 && keys[i].first == keys[i - 1].first)
+    {
+      continue; // merged away
+    }
+    const auto& t = keys[i].first;
+    ring.push_back(t[0] == a ? std::array<Index, 2>{ t[1], t[2] }
+        : t[1] == a          ? std::array<Index, 2>{ t[0], t[2] }
+                             : std::array<Index, 2>{ t[0], t[1] });
+  }
+  // Spoke (a, u) between exactly two faces (a, u, x) and (a, u, y).
+  auto& spokes = this->Spokes;
+  spokes.clear();
+  for (const auto& pair : ring)
+  {
+    spokes.push_back({ pair[0], pair[1] });
+    spokes.push_back({ pair[1], pair[0] });
+  }
+  std::sort(spokes.begin(), spokes.end());
+  std::size_t folds = 0;
+  for (std::size_t i = 0; i < spokes.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < spokes.size() && spokes[j][0] == spokes[i][0])
+    {
+      ++j;
+    }
+    if (j - i == 2 &&
+      IsFold(
+        newPosition, position(spokes[i][0]), position(spokes[i][1]), position(spokes[i + 1][1])))
+    {
+      ++folds;
+    }
+    i = j;
+  }
+  for (std::size_t i = 0; i < ring.size(); ++i)
+  {
+    // Ring edge (u, v) between (a, u, v) and the faces across it.
+    const Index u = ring[i][0], v = ring[i][1];
+    // Scan the shorter face list of the two; stop at a second face (the
+    // edge is then non-manifold and cannot fold).
+    const auto& candidates = this->VertexFaces[u].size() <= this->VertexFaces[v].size()
+      ? this->VertexFaces[u]
+      : this->VertexFaces[v];
+    std::size_t count = 0;
+    Index y = -1;
+    for (Index f : candidates)
+    {
+      if (!this->FaceAlive[f])
+      {
+        continue;
+      }
+      const auto& o = this->Faces[f];
+      const bool hasU = o[0] == u || o[1] == u || o[2] == u;
+      const bool hasV = o[0] == v || o[1] == v || o[2] == v;
+      const bool hasAB = o[0] == a || o[1] == a || o[2] == a || o[0] == b || o[1] == b || o[2] == b;
+      if (hasU && hasV && !hasAB)
+      {
+        y = o[0] != u && o[0] != v ? o[0] : (o[1] != u && o[1] != v ? o[1] : o[2]);
+        if (++count > 1)
+        {
+          break;
+        }
+      }
+    }
+    if (count == 1 && IsFold(position(u), position(v), newPosition, position(y)))
+    {
+      ++folds;
+    }
+  }
+  return folds;
+}
+
+// Whether merging b into a at `newPosition` folds two triangles onto each
+// other that were not folded before. (A face's own normal may turn by less
+// than the flip test allows and still fold over its neighbour; and the
+// flip test is skipped on spike edges.)
+bool MedialEdgeCollapse::CreatesFold(Index a, Index b, const Point3& newPosition)
+{
+  const std::size_t foldsAfter = this->FoldsAroundMerged(a, b, newPosition);
+  if (foldsAfter == 0)
+  {
+    return false;
+  }
+  // Rare: were there as many folds before (in a medial mesh given as input)?
+  auto has = [](const std::array<Index, 3>& t, Index v)
+  { return t[0] == v || t[1] == v || t[2] == v; };
+  auto& before = this->CentreBefore;
+  before.clear();
+  for (Index v : { a, b })
+  {
+    for (Index f : this->VertexFaces[v])
+    {
+      const auto& t = this->Faces[f];
+      if (this->FaceAlive[f] && !(v == b && has(t, a)))
+      {
+        before.push_back(t);
+      }
+    }
+  }
+  // The faces across the ring edges (those without a or b).
+  auto& outer = this->Outer;
+  outer.clear();
+  for (const auto& t : before)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index u = t[k], v = t[(k + 1) % 3];
+      if (u == a || u == b || v == a || v == b)
+      {
+        continue;
+      }
+      for (Index f : this->VertexFaces[u])
+      {
+        const auto& o = this->Faces[f];
+        if (this->FaceAlive[f] && has(o, v) && !has(o, a) && !has(o, b))
+        {
+          std::array<Index, 3> sorted = o;
+          std::sort(sorted.begin(), sorted.end());
+          outer.push_back(sorted);
+        }
+      }
+    }
+  }
+  std::sort(outer.begin(), outer.end());
+  outer.erase(std::unique(outer.begin(), outer.end()), outer.end());
+  return foldsAfter > this->CountFolds(before, -1, newPosition);
+}
+
+// When the optimal sphere would break validity: the policy's fallback
+// spheres, best first.
+bool MedialEdgeCollapse::CollapseAtFallback(Index a, Index b)
+{
+  for (const Sphere& s : this->Policy.FallbackSpheres(*this, a, b))
+  {
+    if (this->Collapse(a, b, s))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Whether moving v to `target` keeps its faces non-degenerate and folds no
+// more of them than before.
+bool MedialEdgeCollapse::MoveKeepsValid(Index v, const Point3& target)
+{
+  auto& faces = this->FaceKeys;
+  faces.clear();
+  for (Index f : this->VertexFaces[v])
+  {
+    Point3 p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index u = this->Faces[f][k];
+      p[k] = u == v ? target : this->Position(u);
+    }
+    if (IsDegenerate(p[0], p[1], p[2]))
+    {
+      return false;
+    }
+    std::array<Index, 3> sorted = this->Faces[f];
+    std::sort(sorted.begin(), sorted.end());
+    faces.emplace_back(sorted, f);
+  }
+  std::sort(faces.begin(), faces.end());
+  return this->FoldsAroundMerged(v, -1, target) <=
+    this->FoldsAroundMerged(v, -1, this->Position(v));
+}
+
+void MedialEdgeCollapse::PushAllEdges()
+{
+  std::vector<std::array<Index, 2>> edges;
+  for (std::size_t v = 0; v < this->Spheres.size(); ++v)
+  {
+    if (!this->VertexAlive[v])
+    {
+      continue;
+    }
+    for (Index u : this->VertexNeighbours[v])
+    {
+      if (static_cast<Index>(v) < u)
+      {
+        edges.push_back({ static_cast<Index>(v), u });
+      }
+    }
+  }
+  // Evaluations are independent: in parallel, each into its own slot.
+  std::vector<Candidate> candidates(edges.size());
+  tbb::enumerable_thread_specific<CollapseScratch> scratches;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 512),
+    [&](const tbb::blocked_range<std::size_t>& r)
+    {
+      auto& scratch = scratches.local();
+      for (std::size_t k = r.begin(); k != r.end(); ++k)
+      {
+        candidates[k] = this->MakeCandidate(edges[k][0], edges[k][1], scratch);
+      }
+    });
+  for (const Candidate& c : candidates)
+  {
+    if (c.Cost < HUGE_VAL)
+    {
+      this->Queue.Push(c);
+    }
+  }
+}
+
+// Collapses the cheapest valid edges until `target` vertices remain, the
+// queue runs dry or the cost limit is reached. Returns false on abort.
+bool MedialEdgeCollapse::CollapseUntil(
+  std::size_t target, const std::function<bool(std::size_t)>& progress)
+{
+  std::size_t sinceReport = 0;
+  Candidate c;
+  while (this->NumberAlive > target && this->Queue.PopCurrent(c))
+  {
+    if (c.Cost > this->Options.MaximumCost)
+    {
+      this->Queue.Clear();
+      break;
+    }
+    // The link condition depends on the connectivity alone: checked once,
+    // not for every placement tried.
+    const bool guarded =
+      this->NumberAlive <= this->Options.TopologyGuardVertexCount && !this->Relaxed;
+    if ((guarded && !this->LinkConditionHolds(c.A, c.B)) ||
+      (!this->Collapse(c.A, c.B, c.Target) && !this->CollapseAtFallback(c.A, c.B)))
+    {
+      ++this->Counts.RejectedCollapses; // not retried until its neighbourhood changes
+      continue;
+    }
+    ++this->Counts.Collapses;
+    this->Counts.RelaxedCollapses += this->Relaxed ? 1 : 0;
+    this->Counts.FoldingAllowedCollapses += this->FoldsAllowedAtLast ? 1 : 0;
+    this->Policy.AfterCollapse(*this, c.A);
+    for (Index u : this->VertexNeighbours[c.A])
+    {
+      this->Push(c.A, u);
+    }
+    if (++sinceReport >= 256)
+    {
+      sinceReport = 0;
+      if (!progress(this->NumberAlive))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+EdgeCollapseCounts MedialEdgeCollapse::Run()
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t nv = this->Spheres.size();
+  auto report = [this](double f) { return !this->Options.Progress || this->Options.Progress(f); };
+
+  const std::vector<Index> urgent = this->Policy.Prepare(*this);
+  this->PushAllEdges();
+  for (Index v : urgent)
+  {
+    for (Index u : this->VertexNeighbours[v])
+    {
+      Candidate c = this->MakeCandidate(v, u, this->Scratch);
+      c.Cost = -1.0; // before any other collapse
+      this->Queue.Push(c);
+    }
+  }
+  this->Counts.QueueInitialisationSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!report(0.1))
+  {
+    this->Counts.Aborted = true;
+    return this->Counts;
+  }
+
+  const std::size_t target = std::max<std::size_t>(1, this->Options.TargetNumberOfVertices);
+  const double toRemove = static_cast<double>(nv > target ? nv - target : 1);
+  auto progress = [&](std::size_t alive)
+  { return report(0.1 + 0.85 * std::min(1.0, static_cast<double>(nv - alive) / toRemove)); };
+  if (!this->CollapseUntil(target, progress))
+  {
+    this->Counts.Aborted = true;
+    return this->Counts;
+  }
+  // Stalled because every remaining collapse would fold triangles onto each
+  // other: where a tube's thin sheets must shrink to a curve, the last
+  // strips of sliver triangles cannot collapse otherwise. Go on without the
+  // fold guard and count those collapses.
+  if (this->NumberAlive > target && this->FoldGuard)
+  {
+    this->FoldGuard = false;
+    this->FoldsAllowedAtLast = true;
+    this->PushAllEdges();
+    if (!this->CollapseUntil(target, progress))
+    {
+      this->Counts.Aborted = true;
+      return this->Counts;
+    }
+  }
+  // Stalled below the topology guard (no collapse keeps the link condition,
+  // as in a contractible but non-collapsible "foam" of sheets): unless the
+  // guard is strict, reach the target anyway and count those collapses.
+  if (this->NumberAlive > target && this->NumberAlive <= this->Options.TopologyGuardVertexCount &&
+    !this->Options.StrictTopologyGuard)
+  {
+    this->Relaxed = true;
+    this->PushAllEdges();
+    if (!this->CollapseUntil(target, progress))
+    {
+      this->Counts.Aborted = true;
+      return this->Counts;
+    }
+  }
+  report(1.0);
+  return this->Counts;
+}
+
+MedialMesh MedialEdgeCollapse::Output(std::vector<Index>& outputToInput) const
+{
+  MedialMesh out;
+  outputToInput.clear();
+  std::vector<Index> newId(this->Spheres.size(), -1);
+  for (std::size_t v = 0; v < this->Spheres.size(); ++v)
+  {
+    if (!this->VertexAlive[v])
+    {
+      continue;
+    }
+    newId[v] = static_cast<Index>(out.Centers.size());
+    outputToInput.push_back(static_cast<Index>(v));
+    const Sphere& s = this->Spheres[v];
+    out.Centers.push_back(this->UnitFrame.From({ s[0], s[1], s[2] }));
+    out.Radii.push_back(s[3] / this->UnitFrame.Scale);
+  }
+  for (std::size_t f = 0; f < this->Faces.size(); ++f)
+  {
+    if (this->FaceAlive[f])
+    {
+      const auto& t = this->Faces[f];
+      out.Faces.push_back({ newId[t[0]], newId[t[1]], newId[t[2]] });
+    }
+  }
+  for (std::size_t v = 0; v < this->Spheres.size(); ++v)
+  {
+    if (!this->VertexAlive[v])
+    {
+      continue;
+    }
+    for (Index u : this->VertexNeighbours[v])
+    {
+      if (static_cast<Index>(v) < u)
+      {
+        out.Edges.push_back({ newId[v], newId[u] });
+      }
+    }
+  }
+  return out;
+}
+}

@@ -303,7 +303,8 @@ bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target)
     }
   }
 
-  if (this->FoldGuard && this->CreatesFold(a, b, newPosition))
+  if (this->FoldGuard && (this->Options.FoldTestOnSpikes || !spike) &&
+    this->CreatesFold(a, b, newPosition))
   {
     return false;
   }

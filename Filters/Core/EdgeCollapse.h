@@ -38,8 +38,10 @@ struct EdgeCollapseOptions
   /// Stop when the cheapest collapse costs more.
   double MaximumCost = std::numeric_limits<double>::infinity();
   /// Edges whose stability ratio is below this are spikes: the flip test is
-  /// skipped when they collapse (their needle triangles turn any way).
+  /// skipped when they collapse (their needle triangles turn any way), and
+  /// the fold test too unless FoldTestOnSpikes.
   double SpikeThreshold = 0.025;
+  bool FoldTestOnSpikes = true;
   /// Below this many vertices the link condition guards every collapse.
   std::size_t TopologyGuardVertexCount = std::numeric_limits<std::size_t>::max();
   /// See AtlasSimplifierOptions::FringeCollapses.

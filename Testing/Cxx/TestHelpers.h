@@ -134,8 +134,9 @@ struct SimplifiedRun
   AtlasSimplifierResult Result;
 };
 
-inline SimplifiedRun Simplify(const TriangleMesh& surface, std::size_t samples, std::size_t target,
-  bool cad, bool concaveFiltering = true, bool invaginatedTerm = true, bool fringeCollapses = false)
+/// Sampling, RVD and the initial (Voronoi) medial mesh with its Atlases.
+inline SimplifiedRun InitialMedialAxis(
+  const TriangleMesh& surface, std::size_t samples, bool concaveFiltering = true)
 {
   SimplifiedRun run;
   SamplingOptions sampling;
@@ -149,6 +150,13 @@ inline SimplifiedRun Simplify(const TriangleMesh& surface, std::size_t samples, 
   run.Initial.Mesh = std::move(voronoi.Mesh);
   run.Initial.AtlasOffsets = std::move(voronoi.AtlasOffsets);
   run.Initial.AtlasSites = std::move(voronoi.AtlasSites);
+  return run;
+}
+
+inline SimplifiedRun Simplify(const TriangleMesh& surface, std::size_t samples, std::size_t target,
+  bool cad, bool concaveFiltering = true, bool invaginatedTerm = true, bool fringeCollapses = false)
+{
+  SimplifiedRun run = InitialMedialAxis(surface, samples, concaveFiltering);
   AtlasSimplifierOptions options;
   options.TargetNumberOfVertices = target;
   options.PreserveSharpFeatures = cad;

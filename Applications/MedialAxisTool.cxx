@@ -66,6 +66,10 @@ Options:
   --target N            spheres left after simplification (overrides the preset)
   --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not
   --feature-angle DEG   dihedral tolerance for sharp edges (default 45)
+  --strategy structural|qmat
+                        simplifier: structural (default, Structural MAT's
+                        Atlas energy) or qmat (Q-MAT's slab quadric error on
+                        the same initial medial mesh, for comparison)
   --fringe-collapses    let the simplifier break the link condition with
                         collapses that keep the Euler characteristic: removes
                         the fringe of thin fins along large fillets
@@ -107,7 +111,7 @@ struct Options
   vtkIdType Samples = -1, Target = -1;
   int Sharp = -1; // -1: from the preset
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
-       Fillets = false, FringeCollapses = false;
+       Fillets = false, FringeCollapses = false, QMat = false;
   double FeatureAngle = 45.0;
   int Seed = 0, Threads = 0;
 };
@@ -156,6 +160,19 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
         return "--preset must be cad or organic, got '" + preset + "'";
       }
       o.Cad = preset == "cad";
+    }
+    else if (arg == "--strategy")
+    {
+      if (i + 1 >= argc)
+      {
+        return "--strategy needs structural or qmat";
+      }
+      const std::string strategy = argv[++i];
+      if (strategy != "structural" && strategy != "qmat")
+      {
+        return "--strategy must be structural or qmat, got '" + strategy + "'";
+      }
+      o.QMat = strategy == "qmat";
     }
     else if (arg == "--samples" || arg == "--target")
     {
@@ -451,6 +468,8 @@ int main(int argc, char** argv)
   }
   structural->SetFeatureAngle(o.FeatureAngle);
   structural->SetFringeCollapses(o.FringeCollapses);
+  structural->SetStrategy(
+    o.QMat ? vtkStructuralMedialAxis::QMat : vtkStructuralMedialAxis::Structural);
   structural->SetRandomSeed(o.Seed);
   structural->SetNumberOfThreads(o.Threads);
   structural->SetGenerateEnvelope(o.Envelope);
@@ -604,6 +623,7 @@ int main(int argc, char** argv)
          << (structural->GetPreserveSharpFeatures() ? "true" : "false")
          << ", \"feature_angle\": " << o.FeatureAngle
          << ", \"fringe_collapses\": " << (o.FringeCollapses ? "true" : "false")
+         << ", \"strategy\": " << (o.QMat ? "\"qmat\"" : "\"structural\"")
          << ", \"seed\": " << o.Seed << ", \"threads\": " << o.Threads << "},\n  \"seconds\": {";
     const char* stages[] = { "Sampling", "RestrictedVoronoi", "VoronoiMedialAxis", "Simplification",
       "Total" };

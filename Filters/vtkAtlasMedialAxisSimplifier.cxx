@@ -100,16 +100,6 @@ std::string ReadRvd(vtkPolyData* input, medialaxis::RestrictedVoronoiDiagram& rv
   return std::string();
 }
 
-double StabilityRatio(const medialaxis::MedialMesh& m, medialaxis::Index a, medialaxis::Index b)
-{
-  double d2 = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    d2 += (m.Centers[a][k] - m.Centers[b][k]) * (m.Centers[a][k] - m.Centers[b][k]);
-  }
-  const double d = std::sqrt(d2);
-  return d > 0.0 ? std::max(0.0, d - std::fabs(m.Radii[a] - m.Radii[b])) / d : 0.0;
-}
 }
 
 int vtkAtlasMedialAxisSimplifier::RequestData(
@@ -192,32 +182,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   }
   output->GetPointData()->AddArray(feature);
 
-  // Stability ratio per cell, in the cell order verts, lines, polys.
-  vtkNew<vtkDoubleArray> stability;
-  stability->SetName("StabilityRatio");
-  stability->SetNumberOfTuples(output->GetNumberOfCells());
-  vtkIdType cell = 0;
-  for (vtkIdType i = 0; i < output->GetNumberOfVerts(); ++i)
-  {
-    stability->SetValue(cell++, 1.0);
-  }
-  for (vtkCellArray* cells : { output->GetLines(), output->GetPolys() })
-  {
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
-      double ratio = 1.0;
-      for (vtkIdType k = 0; k < (n == 2 ? 1 : n); ++k)
-      {
-        ratio = std::min(ratio, StabilityRatio(m.Mesh, ids[k], ids[(k + 1) % n]));
-      }
-      stability->SetValue(cell++, ratio);
-    }
-  }
-  output->GetCellData()->AddArray(stability);
+  medialaxis::AddStabilityRatios(m.Mesh, output);
   for (const auto& [name, value] :
     { std::pair<const char*, std::size_t>{ "Collapses", result.Collapses },
       { "RejectedCollapses", result.RejectedCollapses },
@@ -231,33 +196,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   medialaxis::AddFieldDouble(
     output, "QueueInitialisationSeconds", result.QueueInitialisationSeconds);
 
-  // The RVD, coloured by a medial vertex whose Atlas holds each polygon's site.
-  std::vector<vtkIdType> vertexOfSite(sites.size(), -1);
-  for (std::size_t v = 0; v + 1 < m.AtlasOffsets.size(); ++v)
-  {
-    for (medialaxis::Index k = m.AtlasOffsets[v]; k < m.AtlasOffsets[v + 1]; ++k)
-    {
-      if (vertexOfSite[m.AtlasSites[k]] < 0)
-      {
-        vertexOfSite[m.AtlasSites[k]] = static_cast<vtkIdType>(v);
-      }
-    }
-  }
-  rvdOut->ShallowCopy(rvdIn);
-  vtkDataArray* siteIds = rvdIn->GetCellData()->GetArray("SiteId");
-  vtkNew<vtkIdTypeArray> vertexIds;
-  vertexIds->SetName("MedialVertexId");
-  vertexIds->SetNumberOfTuples(rvdIn->GetNumberOfCells());
-  for (vtkIdType c = 0; c < rvdIn->GetNumberOfCells(); ++c)
-  {
-    const auto site = static_cast<vtkIdType>(siteIds->GetComponent(c, 0));
-    vertexIds->SetValue(
-      c, site >= 0 && site < static_cast<vtkIdType>(sites.size()) ? vertexOfSite[site] : -1);
-  }
-  vtkNew<vtkCellData> cellData;
-  cellData->ShallowCopy(rvdIn->GetCellData());
-  rvdOut->GetCellData()->ShallowCopy(cellData);
-  rvdOut->GetCellData()->AddArray(vertexIds);
+  medialaxis::AddCorrespondence(rvdIn, m.AtlasOffsets, m.AtlasSites, sites.size(), rvdOut);
   this->UpdateProgress(1.0);
   return 1;
 }

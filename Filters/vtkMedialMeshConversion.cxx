@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkMedialMeshConversion.h"
 
+#include "Vec3.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -11,6 +14,9 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace medialaxis
 {
@@ -218,5 +224,72 @@ std::string PolyDataToMedialMesh(vtkPolyData* input, MedialMesh& mesh)
       " line cell(s) duplicating an edge of a triangle";
   }
   return std::string();
+}
+
+void AddStabilityRatios(const MedialMesh& m, vtkPolyData* output)
+{
+  auto ratio = [&m](vtkIdType a, vtkIdType b)
+  {
+    const double d = Norm(m.Centers[b] - m.Centers[a]);
+    return d > 0.0 ? std::max(0.0, d - std::fabs(m.Radii[a] - m.Radii[b])) / d : 0.0;
+  };
+  // In the cell order verts, lines, polys.
+  vtkNew<vtkDoubleArray> stability;
+  stability->SetName("StabilityRatio");
+  stability->SetNumberOfTuples(output->GetNumberOfCells());
+  vtkIdType cell = 0;
+  for (vtkIdType i = 0; i < output->GetNumberOfVerts(); ++i)
+  {
+    stability->SetValue(cell++, 1.0);
+  }
+  for (vtkCellArray* cells : { output->GetLines(), output->GetPolys() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      double smallest = 1.0;
+      for (vtkIdType k = 0; k < (n == 2 ? 1 : n); ++k)
+      {
+        smallest = std::min(smallest, ratio(ids[k], ids[(k + 1) % n]));
+      }
+      stability->SetValue(cell++, smallest);
+    }
+  }
+  output->GetCellData()->AddArray(stability);
+}
+
+void AddCorrespondence(vtkPolyData* rvdIn, const std::vector<Index>& atlasOffsets,
+  const std::vector<Index>& atlasSites, std::size_t numberOfSites, vtkPolyData* rvdOut)
+{
+  std::vector<vtkIdType> vertexOfSite(numberOfSites, -1);
+  for (std::size_t v = 0; v + 1 < atlasOffsets.size(); ++v)
+  {
+    for (Index k = atlasOffsets[v]; k < atlasOffsets[v + 1]; ++k)
+    {
+      const Index site = atlasSites[k];
+      if (site >= 0 && static_cast<std::size_t>(site) < numberOfSites && vertexOfSite[site] < 0)
+      {
+        vertexOfSite[site] = static_cast<vtkIdType>(v);
+      }
+    }
+  }
+  rvdOut->ShallowCopy(rvdIn);
+  vtkDataArray* siteIds = rvdIn->GetCellData()->GetArray("SiteId");
+  vtkNew<vtkIdTypeArray> vertexIds;
+  vertexIds->SetName("MedialVertexId");
+  vertexIds->SetNumberOfTuples(rvdIn->GetNumberOfCells());
+  for (vtkIdType c = 0; c < rvdIn->GetNumberOfCells(); ++c)
+  {
+    const auto site = siteIds ? static_cast<vtkIdType>(siteIds->GetComponent(c, 0)) : -1;
+    vertexIds->SetValue(
+      c, site >= 0 && site < static_cast<vtkIdType>(numberOfSites) ? vertexOfSite[site] : -1);
+  }
+  vtkNew<vtkCellData> cellData;
+  cellData->ShallowCopy(rvdIn->GetCellData());
+  rvdOut->GetCellData()->ShallowCopy(cellData);
+  rvdOut->GetCellData()->AddArray(vertexIds);
 }
 }

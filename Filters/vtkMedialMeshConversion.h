@@ -38,6 +38,18 @@ void AddAtlasArrays(
 std::string GetAtlasArrays(
   vtkPolyData* input, std::vector<Index>& offsets, std::vector<Index>& sites);
 
+/// Adds cell data `StabilityRatio` to the poly data made from `mesh` by
+/// MedialMeshToPolyData: per line its edge's ratio (Q-MAT's Gamma), per
+/// triangle the smallest of its edges', 1 for isolated vertices.
+void AddStabilityRatios(const MedialMesh& mesh, vtkPolyData* output);
+
+/// `rvdOut` = the restricted Voronoi diagram `rvdIn` (cell data `SiteId`)
+/// plus cell data `MedialVertexId`: a medial vertex whose Atlas holds the
+/// polygon's site, -1 if none (colour the surface by it to see the
+/// correspondence).
+void AddCorrespondence(vtkPolyData* rvdIn, const std::vector<Index>& atlasOffsets,
+  const std::vector<Index>& atlasSites, std::size_t numberOfSites, vtkPolyData* rvdOut);
+
 /// Adds a one-value field-data array (a count or statistic for reports).
 void AddFieldValue(vtkPolyData* output, const char* name, long long value);
 

@@ -4,8 +4,9 @@
  * @brief   Surface in, simplified Structural MAT out: the whole chain in one filter.
  *
  * Runs vtkBlueNoiseSurfaceSampler -> vtkRestrictedVoronoiDiagram ->
- * vtkVoronoiMedialAxis -> vtkAtlasMedialAxisSimplifier on a closed triangle
- * surface, with every stage's main parameters exposed here. Two presets
+ * vtkVoronoiMedialAxis -> vtkAtlasMedialAxisSimplifier (or, with Strategy
+ * QMat, vtkQMatSimplifier on the same initial medial mesh) on a closed
+ * triangle surface, with every stage's main parameters exposed here. Two presets
  * follow the paper's settings: SetPresetToCAD() (50,000 samples -> 5,000
  * spheres, sharp features preserved) and SetPresetToOrganic() (10,000 ->
  * 1,000, no feature snapping); the constructor applies the organic one.
@@ -96,6 +97,22 @@ public:
   ///@}
 
   ///@{
+  /// Simplification strategy: Structural (default, the Atlas-guided energy
+  /// of Structural MAT) or QMat (Q-MAT's slab quadric error on the same
+  /// initial medial mesh, for comparison; sharp-feature snapping, Lambda and
+  /// SpikeThreshold do not apply to it).
+  enum StrategyType
+  {
+    Structural = 0,
+    QMat = 1
+  };
+  vtkSetClampMacro(Strategy, int, Structural, QMat);
+  vtkGetMacro(Strategy, int);
+  void SetStrategyToStructural() { this->SetStrategy(Structural); }
+  void SetStrategyToQMat() { this->SetStrategy(QMat); }
+  ///@}
+
+  ///@{
   /// Laplacian weight of the collapse energy, in the model scaled to the
   /// unit box (default 6e-6, as in the paper).
   vtkSetClampMacro(Lambda, double, 0.0, 1.0);
@@ -136,6 +153,7 @@ protected:
   vtkIdType TargetNumberOfVertices = 1000;
   bool PreserveSharpFeatures = false;
   bool FringeCollapses = false;
+  int Strategy = Structural;
   double FeatureAngle = 45.0;
   bool ConcaveFiltering = true;
   double Lambda = 6e-6;

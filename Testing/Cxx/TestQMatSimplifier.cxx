@@ -10,6 +10,14 @@
 #include "Random.h"
 #include "Vec3.h"
 
+#include "vtkAnalyticShapeSource.h"
+#include "vtkCellData.h"
+#include "vtkFieldData.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkQMatSimplifier.h"
+#include "vtkStructuralMedialAxis.h"
+
 #include "TestHelpers.h"
 
 #include <gtest/gtest.h>
@@ -22,6 +30,7 @@
 using namespace medialaxis;
 using medialaxis::test::InitialMedialAxis;
 using medialaxis::test::SimplifiedRun;
+namespace test = medialaxis::test;
 
 namespace
 {
@@ -192,4 +201,49 @@ TEST(QMatSimplifier, EmptyAndTinyInputs)
   EXPECT_GT(soft.Medial.Mesh.Radii[0], 0.5);
   EXPECT_LT(soft.Medial.Mesh.Radii[0], 0.55);
   EXPECT_NEAR(soft.Medial.Mesh.Centers[0][0], 0.5, 1e-9);
+}
+
+TEST(QMatSimplifierFilter, PipelineOneClickAndBadInput)
+{
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToTorus();
+  shape->SetResolution(16);
+  test::InitialMedialPipeline pipeline(shape->GetOutputPort(), 3000);
+  vtkNew<vtkQMatSimplifier> qmat;
+  qmat->SetInputConnection(pipeline.Voronoi->GetOutputPort());
+  qmat->SetTargetNumberOfVertices(100);
+  qmat->Update();
+  vtkPolyData* out = qmat->GetOutput();
+  EXPECT_EQ(out->GetNumberOfPoints(), 100);
+  ASSERT_NE(out->GetPointData()->GetArray("Radius"), nullptr);
+  ASSERT_NE(out->GetCellData()->GetArray("StabilityRatio"), nullptr);
+  ASSERT_NE(out->GetFieldData()->GetArray("AtlasSites"), nullptr); // merged along
+  EXPECT_GT(test::FieldValue(out, "Collapses"), 0.0);
+
+  // The one-click filter with the Q-MAT strategy: same target, correspondence
+  // on port 1.
+  vtkNew<vtkStructuralMedialAxis> structural;
+  structural->SetInputConnection(shape->GetOutputPort());
+  structural->SetNumberOfSamples(3000);
+  structural->SetTargetNumberOfVertices(100);
+  structural->SetStrategyToQMat();
+  structural->Update();
+  EXPECT_EQ(structural->GetOutput(0)->GetNumberOfPoints(), 100);
+  vtkDataArray* ids = vtkPolyData::SafeDownCast(structural->GetOutputDataObject(1))
+                        ->GetCellData()
+                        ->GetArray("MedialVertexId");
+  ASSERT_NE(ids, nullptr);
+  EXPECT_GE(ids->GetRange()[0], 0.0);
+  EXPECT_LT(ids->GetRange()[1], 100.0);
+
+  // No radii: a clear error and an empty output.
+  vtkNew<vtkPolyData> bare;
+  bare->ShallowCopy(shape->GetOutput());
+  vtkNew<vtkQMatSimplifier> bad;
+  bad->SetInputData(bare);
+  vtkNew<test::ErrorCatcher> errors;
+  bad->AddObserver(vtkCommand::ErrorEvent, errors);
+  bad->Update();
+  EXPECT_NE(errors->Last.find("Radius"), std::string::npos) << errors->Last;
+  EXPECT_EQ(bad->GetOutput()->GetNumberOfPoints(), 0);
 }

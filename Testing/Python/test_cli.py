@@ -57,6 +57,22 @@ class CommandLineTest(unittest.TestCase):
         self.assertIn("--samples needs a number", result.stderr)
         self.assertEqual(run("--preset", "blob", "a", "b").returncode, 2)
 
+    def test_qmat_strategy(self):
+        sphere = self.write_sphere("sphere.vtp")
+        report = self.path("report.json")
+        result = run("--quiet", "--strategy", "qmat", "--samples", "2000", "--target", "50",
+                     "--report", report, sphere, self.path("out"))
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(report) as f:
+            data = json.load(f)
+        self.assertEqual(data["parameters"]["strategy"], "qmat")
+        self.assertEqual(data["counts"]["vertices"], 50)
+        self.assertTrue(data["valid"])
+        self.assertTrue(os.path.exists(self.path("out/mat.ma")))
+        result = run("--strategy", "qem", sphere, self.path("out2"))
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("--strategy must be structural or qmat", result.stderr)
+
     def test_unreadable_and_invalid_input(self):
         result = run(self.path("missing.obj"), self.path("out"))
         self.assertEqual(result.returncode, 3)

@@ -83,6 +83,13 @@ with tempfile.TemporaryDirectory() as tmp:
     SaveData(os.path.join(tmp, "initial.ma"), proxy=voronoi)
     back = servermanager.Fetch(MedialAxisReader(FileName=os.path.join(tmp, "initial.ma")))
     check(back.GetNumberOfPoints() == mat.GetNumberOfPoints(), "initial MAT did not survive .ma")
+    # Q-MAT on the medial mesh read from the .ma file (no Atlas needed).
+    qmat = QMATSimplifier(Input=MedialAxisReader(FileName=os.path.join(tmp, "initial.ma")),
+                          TargetNumberOfVertices=100)
+    qmat.UpdatePipeline()
+    qsmall = servermanager.Fetch(qmat)
+    check(qsmall.GetNumberOfPoints() == 100, "Q-MAT: expected 100 spheres, got %d" % qsmall.GetNumberOfPoints())
+    check(qsmall.GetCellData().GetArray("StabilityRatio") is not None, "Q-MAT output lacks StabilityRatio")
 # Atlas-guided simplification with its correspondence output.
 simplified = AtlasMedialAxisSimplifier(Input=voronoi, RestrictedVoronoiDiagram=OutputPort(rvd, 0),
                                        TargetNumberOfVertices=100, PreserveSharpFeatures=0)
@@ -129,6 +136,11 @@ if os.path.exists(fandisk):
     check(corr.GetCellData().GetArray("MedialVertexId") is not None, "no correspondence output")
     shell = servermanager.Fetch(structural, idx=3)
     check(shell.GetCellData().GetArray("PrimitiveKind") is not None, "no envelope output")
+    structural.Strategy = "Q-MAT"
+    structural.UpdatePipeline()
+    qresult = servermanager.Fetch(structural, idx=0)
+    check(qresult.GetNumberOfPoints() == 500, "Q-MAT strategy: expected 500 spheres")
+    check(qresult.GetFieldData().GetArray("NestedCones") is not None, "Q-MAT strategy did not run")
 else:
     print("skipped the one-click filter: %s not found" % fandisk)
 # The envelope of a medial mesh, overlapping primitives and closed boundary.

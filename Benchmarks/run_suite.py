@@ -8,7 +8,9 @@ tool, scaling, and quality against size. Writes <out>/results.json and
 Per mesh (CAD preset for the CAD meshes of SOURCES.md, organic for the rest):
 per-stage times, peak memory, counts, Euler characteristic against 1 - genus,
 validity and triangle quality, two-sided Hausdorff distance, and whether a
-second run wrote a bit-identical .ma file. --quick runs two small meshes at
+second run wrote a bit-identical .ma file; then Q-MAT (--strategy qmat) from
+the same initial medial mesh at the same target, for a side-by-side of
+Hausdorff distance, time and triangle quality. --quick runs two small meshes at
 small sizes (the test suite runs it so that the suite cannot rot).
 """
 import argparse
@@ -42,11 +44,11 @@ def read_sources(mesh_dir):
     return table
 
 
-def run_tool(tool, mesh, out_dir, samples, target, cad, error, threads):
+def run_tool(tool, mesh, out_dir, samples, target, cad, error, threads, strategy="structural"):
     report = os.path.join(out_dir, "report.json")
     args = [tool, "--quiet", "--samples", str(samples), "--target", str(target),
             "--sharp" if cad else "--no-sharp", "--threads", str(threads), "--envelope",
-            "--report", report]
+            "--strategy", strategy, "--report", report]
     if error:
         args.append("--error")
     result = subprocess.run(args + [mesh, out_dir], capture_output=True, text=True)
@@ -79,6 +81,15 @@ def per_mesh(args, tool, mesh_dir, name, category, genus, tmp):
                counts=data["counts"], euler=data["euler_characteristic"],
                euler_expected=1 - genus, valid=data["valid"],
                quality=data["triangle_quality"], hausdorff=data["hausdorff"])
+    # Same samples and seed, hence the same initial medial mesh.
+    qmat = run_tool(tool, path, os.path.join(tmp, name + ".qmat"), samples, target, cad, True,
+                    args.threads, "qmat")
+    if qmat["exit_code"] == 0:
+        row["qmat"] = dict(seconds=qmat["seconds"], counts=qmat["counts"],
+                           euler=qmat["euler_characteristic"], valid=qmat["valid"],
+                           quality=qmat["triangle_quality"], hausdorff=qmat["hausdorff"])
+    else:
+        row["qmat"] = dict(failed=qmat["message"], exit_code=qmat["exit_code"])
     return row
 
 
@@ -148,6 +159,29 @@ def markdown(results):
                          q["percent_min_angle_below_30"], q["mean_q"],
                          fmt(r["hausdorff"]["two_sided_percent"], 3),
                          "yes" if r["identical_rerun"] else "NO"))
+    lines += ["", "## Structural MAT (S) against Q-MAT (Q), same initial medial mesh and target",
+              "", "| mesh | Hausdorff % S / Q | simplify s S / Q | min angle S / Q |"
+              " <30° S / Q | Q S / Q | degenerate+folded S / Q | χ S / Q (1−g) |",
+              "|" + "---|" * 8]
+    for r in results["meshes"]:
+        if "failed" in r or "qmat" not in r:
+            continue
+        q = r["qmat"]
+        if "failed" in q:
+            lines.append("| %s | Q-MAT failed (exit %d): %s |" % (r["mesh"], q["exit_code"],
+                                                                   q["failed"]))
+            continue
+        sq, qq = r["quality"], q["quality"]
+        lines.append("| %s | %s / %s | %s / %s | %.1f° / %.1f° | %.0f%% / %.0f%% | %.2f / %.2f |"
+                     " %d / %d | %d / %d (%d) |" % (
+                         r["mesh"], fmt(r["hausdorff"]["two_sided_percent"], 3),
+                         fmt(q["hausdorff"]["two_sided_percent"], 3),
+                         fmt(r["seconds"]["Simplification"]), fmt(q["seconds"]["Simplification"]),
+                         sq["mean_min_angle_deg"], qq["mean_min_angle_deg"],
+                         sq["percent_min_angle_below_30"], qq["percent_min_angle_below_30"],
+                         sq["mean_q"], qq["mean_q"], sq["degenerate"] + sq["folded"],
+                         qq["degenerate"] + qq["folded"], r["euler"], q["euler"],
+                         r["euler_expected"]))
     lines += ["", "## Summary", ""]
     for key, text in results["summary"].items():
         lines.append("- %s: %s" % (key, text))
@@ -203,6 +237,25 @@ def summarize(rows):
     summary["reruns not identical"] = ", ".join(
         r["mesh"] for r in ok if not r["identical_rerun"]) or "none"
     summary["failed"] = ", ".join(r["mesh"] for r in rows if "failed" in r) or "none"
+    pairs = [r for r in ok if "qmat" in r and "failed" not in r["qmat"]]
+    if pairs:
+        def wins(key):
+            s_wins = sum(1 for r in pairs if key(r) < key(r["qmat"]))
+            return "Structural MAT %d, Q-MAT %d, tied %d" % (
+                s_wins, sum(1 for r in pairs if key(r["qmat"]) < key(r)),
+                sum(1 for r in pairs if key(r["qmat"]) == key(r)))
+        summary["lower Hausdorff"] = wins(lambda r: r["hausdorff"]["two_sided_percent"])
+        summary["faster simplification"] = wins(lambda r: r["seconds"]["Simplification"])
+        summary["fewer degenerate + folded triangles"] = wins(
+            lambda r: r["quality"]["degenerate"] + r["quality"]["folded"])
+        summary["Euler characteristic = 1 − genus"] = "Structural MAT %d, Q-MAT %d of %d" % (
+            sum(1 for r in pairs if r["euler"] == r["euler_expected"]),
+            sum(1 for r in pairs if r["qmat"]["euler"] == r["euler_expected"]), len(pairs))
+        summary["Hausdorff median"] = "Structural MAT %.3f%%, Q-MAT %.3f%%" % (
+            statistics.median(r["hausdorff"]["two_sided_percent"] for r in pairs),
+            statistics.median(r["qmat"]["hausdorff"]["two_sided_percent"] for r in pairs))
+    failed_qmat = [r["mesh"] for r in ok if "failed" in r.get("qmat", {})]
+    summary["Q-MAT failed"] = ", ".join(failed_qmat) or "none"
     return summary
 
 

@@ -64,7 +64,9 @@ Options:
                         = 10,000 samples, 1,000 spheres
   --samples N           surface samples (overrides the preset)
   --target N            spheres left after simplification (overrides the preset)
-  --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not
+  --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not; without
+                        it spike edges may also pass the link condition when
+                        that keeps the Euler characteristic (fewer spikes)
   --feature-angle DEG   dihedral tolerance for sharp edges (default 45)
   --strategy structural|qmat
                         simplifier: structural (default, Structural MAT's
@@ -468,6 +470,8 @@ int main(int argc, char** argv)
   }
   structural->SetFeatureAngle(o.FeatureAngle);
   structural->SetFringeCollapses(o.FringeCollapses);
+  // Spike collapses past the link condition: organic shapes only.
+  structural->SetEulerNeutralSpikeCollapses(!structural->GetPreserveSharpFeatures());
   structural->SetStrategy(
     o.QMat ? vtkStructuralMedialAxis::QMat : vtkStructuralMedialAxis::Structural);
   structural->SetRandomSeed(o.Seed);
@@ -623,6 +627,8 @@ int main(int argc, char** argv)
          << (structural->GetPreserveSharpFeatures() ? "true" : "false")
          << ", \"feature_angle\": " << o.FeatureAngle
          << ", \"fringe_collapses\": " << (o.FringeCollapses ? "true" : "false")
+         << ", \"euler_neutral_spike_collapses\": "
+         << (structural->GetEulerNeutralSpikeCollapses() ? "true" : "false")
          << ", \"strategy\": " << (o.QMat ? "\"qmat\"" : "\"structural\"")
          << ", \"seed\": " << o.Seed << ", \"threads\": " << o.Threads << "},\n  \"seconds\": {";
     const char* stages[] = { "Sampling", "RestrictedVoronoi", "VoronoiMedialAxis", "Simplification",

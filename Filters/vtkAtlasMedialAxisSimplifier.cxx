@@ -158,6 +158,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.InvaginatedTerm = this->InvaginatedTerm;
   options.PreventFolds = this->PreventFolds;
   options.FringeCollapses = this->FringeCollapses;
+  options.EulerNeutralSpikeCollapses = this->EulerNeutralSpikeCollapses;
   options.Progress = [this](double f)
   {
     this->UpdateProgress(0.05 + 0.9 * f);
@@ -187,6 +188,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
     { std::pair<const char*, std::size_t>{ "Collapses", result.Collapses },
       { "RejectedCollapses", result.RejectedCollapses },
       { "RelaxedCollapses", result.RelaxedCollapses }, { "MergedFaces", result.MergedFaces },
+      { "EulerNeutralCollapses", result.EulerNeutralCollapses },
       { "SnappedVertices", result.SnappedVertices }, { "ForcedSnaps", result.ForcedSnaps },
       { "FoldingAllowedCollapses", result.FoldingAllowedCollapses } })
   {
@@ -215,4 +217,5 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InvaginatedTerm: " << this->InvaginatedTerm << "\n";
   os << indent << "PreventFolds: " << this->PreventFolds << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
+  os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
 }

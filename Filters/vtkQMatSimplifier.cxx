@@ -87,6 +87,7 @@ int vtkQMatSimplifier::RequestData(
       { "RelaxedCollapses", result.RelaxedCollapses },
       { "FoldingAllowedCollapses", result.FoldingAllowedCollapses },
       { "MergedFaces", result.MergedFaces },
+      { "EulerNeutralCollapses", result.EulerNeutralCollapses },
       { "FacesWithoutTangentPlanes", result.FacesWithoutTangentPlanes },
       { "NestedCones", result.NestedCones } })
   {

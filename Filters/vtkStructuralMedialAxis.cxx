@@ -39,6 +39,7 @@ void vtkStructuralMedialAxis::SetPresetToCAD()
   this->SetNumberOfSamples(50000);
   this->SetTargetNumberOfVertices(5000);
   this->SetPreserveSharpFeatures(true);
+  this->SetEulerNeutralSpikeCollapses(false);
 }
 
 void vtkStructuralMedialAxis::SetPresetToOrganic()
@@ -46,6 +47,7 @@ void vtkStructuralMedialAxis::SetPresetToOrganic()
   this->SetNumberOfSamples(10000);
   this->SetTargetNumberOfVertices(1000);
   this->SetPreserveSharpFeatures(false);
+  this->SetEulerNeutralSpikeCollapses(true);
 }
 
 int vtkStructuralMedialAxis::FillInputPortInformation(int, vtkInformation* info)
@@ -126,6 +128,7 @@ int vtkStructuralMedialAxis::RequestData(
   simplifier->SetTargetNumberOfVertices(this->TargetNumberOfVertices);
   simplifier->SetPreserveSharpFeatures(this->PreserveSharpFeatures);
   simplifier->SetFringeCollapses(this->FringeCollapses);
+  simplifier->SetEulerNeutralSpikeCollapses(this->EulerNeutralSpikeCollapses);
   simplifier->SetLambda(this->Lambda);
   simplifier->SetSpikeThreshold(this->SpikeThreshold);
   vtkNew<vtkQMatSimplifier> qmat;
@@ -240,6 +243,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetNumberOfVertices: " << this->TargetNumberOfVertices << "\n";
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
+  os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
   os << indent << "Strategy: " << (this->Strategy == QMat ? "QMat" : "Structural") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "ConcaveFiltering: " << this->ConcaveFiltering << "\n";

@@ -41,10 +41,10 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// The paper's CAD settings: 50,000 samples, 5,000 spheres, sharp
-  /// features preserved.
+  /// features preserved; no Euler-neutral spike collapses.
   void SetPresetToCAD();
   /// The paper's organic settings: 10,000 samples, 1,000 spheres, no
-  /// feature snapping.
+  /// feature snapping; Euler-neutral spike collapses on.
   void SetPresetToOrganic();
 
   ///@{
@@ -94,6 +94,16 @@ public:
   vtkSetMacro(FringeCollapses, bool);
   vtkGetMacro(FringeCollapses, bool);
   vtkBooleanMacro(FringeCollapses, bool);
+  ///@}
+
+  ///@{
+  /// Let spike edges pass the link condition with collapses that keep the
+  /// Euler characteristic (see vtkAtlasMedialAxisSimplifier): removes most
+  /// spike triangles of organic shapes. On in the organic preset (the
+  /// default), off in the CAD one.
+  vtkSetMacro(EulerNeutralSpikeCollapses, bool);
+  vtkGetMacro(EulerNeutralSpikeCollapses, bool);
+  vtkBooleanMacro(EulerNeutralSpikeCollapses, bool);
   ///@}
 
   ///@{
@@ -153,6 +163,7 @@ protected:
   vtkIdType TargetNumberOfVertices = 1000;
   bool PreserveSharpFeatures = false;
   bool FringeCollapses = false;
+  bool EulerNeutralSpikeCollapses = true;
   int Strategy = Structural;
   double FeatureAngle = 45.0;
   bool ConcaveFiltering = true;

@@ -559,6 +559,7 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   c.SpikeThreshold = o.SpikeThreshold;
   c.TopologyGuardVertexCount = o.TopologyGuardVertexCount;
   c.FringeCollapses = o.FringeCollapses;
+  c.EulerNeutralSpikeCollapses = o.EulerNeutralSpikeCollapses;
   c.StrictLinkConditionVertexCount = o.StrictLinkConditionVertexCount;
   c.StrictTopologyGuard = o.StrictTopologyGuard;
   c.PreventFolds = o.PreventFolds;
@@ -594,6 +595,7 @@ AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
   result.RelaxedCollapses = counts.RelaxedCollapses;
   result.FoldingAllowedCollapses = counts.FoldingAllowedCollapses;
   result.MergedFaces = counts.MergedFaces;
+  result.EulerNeutralCollapses = counts.EulerNeutralCollapses;
   result.SnappedVertices = policy.Snapped;
   return result;
 }

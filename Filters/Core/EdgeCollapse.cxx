@@ -144,11 +144,13 @@ void MedialEdgeCollapse::Push(Index a, Index b)
   }
 }
 
-bool MedialEdgeCollapse::LinkConditionHolds(Index a, Index b) const
+bool MedialEdgeCollapse::LinkConditionHolds(Index a, Index b)
 {
+  this->EulerNeutral = false;
   // Dey's vertex condition: the common neighbours of a and b must be exactly
-  // the apices of faces (a, b, x). With FringeCollapses, where it fails the
-  // collapse is still taken when it keeps the Euler characteristic: every
+  // the apices of faces (a, b, x). With FringeCollapses (or, for spike
+  // edges, EulerNeutralSpikeCollapses), where it fails the collapse is
+  // still taken when it keeps the Euler characteristic: every
   // extra common neighbour x closes the loop (a, b, x), raising the
   // characteristic by one, and every face pair (a, x, y), (b, x, y) that
   // merges lowers it by one (e.g. the fins of a fringe along a fillet's
@@ -197,8 +199,10 @@ bool MedialEdgeCollapse::LinkConditionHolds(Index a, Index b) const
   {
     return true;
   }
-  if (!this->Options.FringeCollapses ||
-    this->NumberAlive <= this->Options.StrictLinkConditionVertexCount)
+  const bool eulerNeutralAllowed = this->Options.FringeCollapses ||
+    (this->Options.EulerNeutralSpikeCollapses &&
+      this->StabilityRatio(a, b) < this->Options.SpikeThreshold);
+  if (!eulerNeutralAllowed || this->NumberAlive <= this->Options.StrictLinkConditionVertexCount)
   {
     return false;
   }
@@ -223,7 +227,8 @@ bool MedialEdgeCollapse::LinkConditionHolds(Index a, Index b) const
       }
     }
   }
-  return extra == merges;
+  this->EulerNeutral = extra == merges;
+  return this->EulerNeutral;
 }
 
 // Merges b into a at `target` if the result stays a valid medial mesh (the
@@ -314,7 +319,10 @@ bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target)
   {
     this->FaceAlive[f] = 0;
   }
-  this->Counts.MergedFaces += mergedAway.size();
+  // An Euler-neutral collapse's merges pair up with the loops it closes:
+  // they close no bubble.
+  (this->EulerNeutral ? this->Counts.EulerNeutralMerges : this->Counts.MergedFaces) +=
+    mergedAway.size();
   for (Index f : this->VertexFaces[b])
   {
     if (!this->FaceAlive[f])
@@ -654,6 +662,7 @@ bool MedialEdgeCollapse::CollapseUntil(
     }
     // The link condition depends on the connectivity alone: checked once,
     // not for every placement tried.
+    this->EulerNeutral = false;
     const bool guarded =
       this->NumberAlive <= this->Options.TopologyGuardVertexCount && !this->Relaxed;
     if ((guarded && !this->LinkConditionHolds(c.A, c.B)) ||
@@ -663,6 +672,7 @@ bool MedialEdgeCollapse::CollapseUntil(
       continue;
     }
     ++this->Counts.Collapses;
+    this->Counts.EulerNeutralCollapses += this->EulerNeutral ? 1 : 0;
     this->Counts.RelaxedCollapses += this->Relaxed ? 1 : 0;
     this->Counts.FoldingAllowedCollapses += this->FoldsAllowedAtLast ? 1 : 0;
     this->Policy.AfterCollapse(*this, c.A);

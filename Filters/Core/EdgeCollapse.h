@@ -44,8 +44,10 @@ struct EdgeCollapseOptions
   bool FoldTestOnSpikes = true;
   /// Below this many vertices the link condition guards every collapse.
   std::size_t TopologyGuardVertexCount = std::numeric_limits<std::size_t>::max();
-  /// See AtlasSimplifierOptions::FringeCollapses.
+  /// See AtlasSimplifierOptions::FringeCollapses and
+  /// EulerNeutralSpikeCollapses (the latter only for spike edges).
   bool FringeCollapses = false;
+  bool EulerNeutralSpikeCollapses = false;
   std::size_t StrictLinkConditionVertexCount = 200;
   /// When no collapse below the guard keeps the link condition: stop (strict)
   /// or go on without it (counted in RelaxedCollapses).
@@ -63,7 +65,12 @@ struct EdgeCollapseCounts
   std::size_t RejectedCollapses = 0;
   std::size_t RelaxedCollapses = 0;
   std::size_t FoldingAllowedCollapses = 0;
-  std::size_t MergedFaces = 0;
+  std::size_t MergedFaces = 0; // each closed a bubble (lowered the Euler characteristic)
+  /// Collapses past the link condition that keep the Euler characteristic
+  /// (FringeCollapses, EulerNeutralSpikeCollapses) and the face pairs they
+  /// merged (not counted in MergedFaces).
+  std::size_t EulerNeutralCollapses = 0;
+  std::size_t EulerNeutralMerges = 0;
   double QueueInitialisationSeconds = 0.0;
   bool Aborted = false;
 };
@@ -148,7 +155,8 @@ private:
   void Push(Index a, Index b);
   void PushAllEdges();
   bool CollapseUntil(std::size_t target, const std::function<bool(std::size_t)>& progress);
-  bool LinkConditionHolds(Index a, Index b) const;
+  // Sets EulerNeutral when it holds only as an Euler-neutral collapse.
+  bool LinkConditionHolds(Index a, Index b);
   bool Collapse(Index a, Index b, const Sphere& target);
   bool CollapseAtFallback(Index a, Index b);
   bool CreatesFold(Index a, Index b, const Point3& newPosition);
@@ -180,6 +188,7 @@ private:
   std::vector<std::array<Index, 2>> RingPairs, Spokes;
   EdgeCollapseCounts Counts;
   bool Relaxed = false;            // the link condition no longer guards collapses
+  bool EulerNeutral = false;       // the collapse being made passed as Euler-neutral
   bool FoldGuard = true;           // collapses may not fold triangles onto each other
   bool FoldsAllowedAtLast = false; // the fold guard was lifted after a stall
 };

@@ -386,6 +386,7 @@ QMatSimplifierResult SimplifyMedialAxisQMat(
   result.RelaxedCollapses = counts.RelaxedCollapses;
   result.FoldingAllowedCollapses = counts.FoldingAllowedCollapses;
   result.MergedFaces = counts.MergedFaces;
+  result.EulerNeutralCollapses = counts.EulerNeutralCollapses;
   return result;
 }
 }

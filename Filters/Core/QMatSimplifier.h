@@ -62,6 +62,8 @@ struct QMatSimplifierResult
   std::size_t RelaxedCollapses = 0;
   std::size_t FoldingAllowedCollapses = 0;
   std::size_t MergedFaces = 0;
+  /// Collapses past the link condition that keep the Euler characteristic.
+  std::size_t EulerNeutralCollapses = 0;
   /// Input faces whose three balls have no common tangent planes (their
   /// edges' cone terms stand in for them) and input cones with one ball
   /// inside the other (no SQE term).

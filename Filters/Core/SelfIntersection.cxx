@@ -5,7 +5,6 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <array>
@@ -17,16 +16,6 @@ namespace
 {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-
-template <class Object>
-CGAL::Bbox_3 BoxOf(const Object& object)
-{
-  return object.bbox();
-}
-CGAL::Bbox_3 BoxOf(const std::vector<Kernel::Point_3>& polygon)
-{
-  return CGAL::bbox_3(polygon.begin(), polygon.end());
-}
 }
 
 std::vector<TriangleCrossing> FindSelfIntersections(
@@ -72,19 +61,13 @@ std::vector<TriangleCrossing> FindSelfIntersections(
     TriangleCrossing c;
     c.A = static_cast<Index>(std::min(f.idx(), g.idx()));
     c.B = static_cast<Index>(std::max(f.idx(), g.idx()));
-    // Where they meet: a point, segment, triangle or polygon (inexact
-    // constructions suffice for its extent). Crossings the construction
-    // misses (rounding) fall back to the two triangles' common box.
-    CGAL::Bbox_3 box;
-    const auto meet = CGAL::intersection(triangleOf(f), triangleOf(g));
-    if (meet)
-    {
-      box = boost::apply_visitor([](const auto& x) { return BoxOf(x); }, *meet);
-    }
-    else
-    {
-      box = triangleOf(f).bbox() + triangleOf(g).bbox();
-    }
+    // Where they meet lies in the common part of their bounding boxes.
+    // (Constructing the intersection itself in floating point can overflow
+    // to NaN on extreme coordinates, which CGAL's exact fallback rejects.)
+    const CGAL::Bbox_3 a = triangleOf(f).bbox(), b = triangleOf(g).bbox();
+    const CGAL::Bbox_3 box(std::max(a.xmin(), b.xmin()), std::max(a.ymin(), b.ymin()),
+      std::max(a.zmin(), b.zmin()), std::min(a.xmax(), b.xmax()), std::min(a.ymax(), b.ymax()),
+      std::min(a.zmax(), b.zmax()));
     c.Lo = { box.xmin(), box.ymin(), box.zmin() };
     c.Hi = { box.xmax(), box.ymax(), box.zmax() };
     pairs.push_back(c);

@@ -11,7 +11,8 @@
 
 namespace medialaxis
 {
-/// Two triangles that cross, and the bounding box of where they meet.
+/// Two triangles that cross, and a box around where they meet (the common
+/// part of their bounding boxes).
 struct TriangleCrossing
 {
   Index A, B; // indices into the triangles, A < B

@@ -673,7 +673,10 @@ SurfacePreparationReport PrepareSurface(
   // them (overlapping spheres would become a sphere with a cavity). Scanned
   // and decimated meshes often have a few neighbouring triangles folded over
   // each other; those are local and only noted.
-  const auto crossings = FindSelfIntersections(input.Points, triangles);
+  report.Crossings = options.KnownCrossings ? *options.KnownCrossings
+                                            : FindSelfIntersections(input.Points, triangles);
+  report.SelfIntersectionTested = true;
+  const std::vector<TriangleCrossing>& crossings = report.Crossings;
   report.SelfIntersections = crossings.size();
   if (!crossings.empty())
   {

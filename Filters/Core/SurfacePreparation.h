@@ -6,6 +6,7 @@
 #define medialaxis_SurfacePreparation_h
 
 #include "PolygonMesh.h"
+#include "SelfIntersection.h"
 
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ struct SurfacePreparationOptions
   /// contact, e.g. a scanned limb touching the body: kept, with a note).
   /// Shells that cross each other are always refused.
   double MaxPassThroughExtent = 0.01;
+  /// The crossings an earlier run found on the same input with the same
+  /// options (its report's Crossings): the costly exact test is skipped.
+  const std::vector<TriangleCrossing>* KnownCrossings = nullptr;
 };
 
 struct SurfacePreparationReport
@@ -56,6 +60,8 @@ struct SurfacePreparationReport
   std::size_t CrossingShells = 0;      // of them, pairs from separate shells
   std::size_t CrossingFarApart = 0;    // of them, pairs far apart on one shell
   double PassThroughExtent = 0.0;      // box of those crossings / diagonal
+  bool SelfIntersectionTested = false; // the run got as far as that test
+  std::vector<TriangleCrossing> Crossings;
   double Area = 0.0;
   double Volume = 0.0; // enclosed volume after orientation fixing
 

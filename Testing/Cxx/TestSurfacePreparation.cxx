@@ -5,6 +5,7 @@
 #include "TestHelpers.h"
 #include "Vec3.h"
 #include "vtkMedialSurfaceValidator.h"
+#include "vtkSurfacePreparation.h"
 
 #include "vtkCellArray.h"
 #include "vtkPolyData.h"
@@ -457,4 +458,30 @@ TEST(MedialSurfaceValidator, OpenMeshIsRefused)
   EXPECT_FALSE(validator->GetValid());
   EXPECT_EQ(validator->GetNumberOfBoundaryEdges(), 4);
   EXPECT_EQ(std::string(validator->GetErrorMessage()), "surface is not closed: 4 boundary edges");
+}
+
+TEST(MedialSurfaceValidator, RemembersSelfIntersectionsOnlyForAnUnchangedInput)
+{
+  // Stages that prepare the same poly data one after another reuse the
+  // self-intersection test; any change to the points gives a fresh test.
+  const TriangleMesh sphere = MakeSphere(1.0, 8);
+  auto surface = test::ToPolyData(sphere);
+  vtkNew<vtkPolyData> out;
+  SurfacePreparationReport first = PrepareSurfacePolyData(surface, out);
+  SurfacePreparationReport again = PrepareSurfacePolyData(surface, out);
+  ASSERT_TRUE(first.Ok()) << first.Error;
+  EXPECT_TRUE(again.Ok()) << again.Error;
+
+  vtkIdType pole = 0;
+  for (vtkIdType i = 1; i < surface->GetNumberOfPoints(); ++i)
+  {
+    pole = surface->GetPoint(i)[2] > surface->GetPoint(pole)[2] ? i : pole;
+  }
+  surface->GetPoints()->SetPoint(pole, 0.05, 0.03, -1.5);
+  surface->GetPoints()->Modified();
+  first = PrepareSurfacePolyData(surface, out);
+  again = PrepareSurfacePolyData(surface, out);
+  EXPECT_TRUE(Contains(first.Error, "the surface passes through itself")) << first.Error;
+  EXPECT_EQ(again.Error, first.Error);
+  EXPECT_EQ(again.CrossingFarApart, first.CrossingFarApart);
 }

@@ -2,13 +2,17 @@
 // Per-stage wall time and peak resident memory of the MedialAxis pipeline.
 //
 //   medialaxis-benchmark [--samples N] [--target V] [--cad] [--threads T] [--scaling]
-//                        [--envelope] [--error-samples S] [--shape torus|box|...] mesh...
+//                        [--counts N1,N2,...] [--envelope] [--error-samples S]
+//                        [--shape torus|box|...] [--resolution R] mesh...
 //
 // Memory: the process's resident peak during each stage, and in brackets
 // how far it rose above the resident size at the stage's start.
-// --scaling runs every mesh at 10K, 25K, 50K, 100K and 200K samples (target
-// a tenth of the samples) and
-// prints the fitted growth exponent of each stage's time.
+// --scaling runs every mesh at 10K, 25K, 50K, 100K and 200K samples (or the
+// --counts given; target a tenth of the samples), prints the fitted growth
+// exponent of each stage's time, and a table of samples against the run's
+// time and peak memory with the growth exponent of the memory the run adds
+// to the loaded mesh. --resolution sets a --shape's tessellation (torus:
+// 128 R^2 triangles, R = 90 gives about 1M).
 // --envelope adds, on the simplified MAT: "envelope" (the primitives-mode
 // envelope surface, core), "envelope-vtk" (the same through
 // vtkSlabReconstructor, poly data included) and "error" (reconstruction
@@ -31,6 +35,7 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -38,6 +43,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -85,20 +91,34 @@ Stage Measure(const std::string& name, F&& work)
   return { name, seconds, peak, peak - before };
 }
 
+int ShapeResolution = 0; // 0: each shape's default
+
 bool LoadSurface(
   const std::string& spec, bool isShape, TriangleMesh& mesh, std::vector<Stage>& stages)
 {
   if (isShape)
   {
-    if (spec == "torus")
-      mesh = MakeTorus(2.0, 0.5, 64);
-    else if (spec == "sphere")
-      mesh = MakeSphere(1.0, 64);
-    else if (spec == "box")
-      mesh = MakeRoundedBox({ 2, 2, 2 }, 0.2, 32);
-    else
+    TriangleMesh shape;
+    stages.push_back(Measure("generate",
+      [&]
+      {
+        if (spec == "torus")
+          shape = MakeTorus(2.0, 0.5, ShapeResolution ? ShapeResolution : 64);
+        else if (spec == "sphere")
+          shape = MakeSphere(1.0, ShapeResolution ? ShapeResolution : 64);
+        else if (spec == "box")
+          shape = MakeRoundedBox({ 2, 2, 2 }, 0.2, ShapeResolution ? ShapeResolution : 32);
+      }));
+    if (shape.Triangles.empty())
     {
       std::cerr << "unknown shape '" << spec << "' (torus, sphere, box)\n";
+      return false;
+    }
+    SurfacePreparationReport report;
+    stages.push_back(Measure("prepare", [&] { report = PrepareSurface(shape, mesh); }));
+    if (!report.Ok())
+    {
+      std::cerr << spec << ": " << report.Error << "\n";
       return false;
     }
     return true;
@@ -241,6 +261,7 @@ int main(int argc, char* argv[])
   bool cad = false;
   int threads = 0;
   bool scaling = false;
+  std::vector<std::size_t> counts = { 10000, 25000, 50000, 100000, 200000 };
   std::vector<std::pair<std::string, bool>> inputs; // (path or shape, is shape)
   for (int i = 1; i < argc; ++i)
   {
@@ -263,11 +284,24 @@ int main(int argc, char* argv[])
       ErrorSamples = std::stoul(argv[++i]);
     else if (arg == "--shape" && i + 1 < argc)
       inputs.emplace_back(argv[++i], true);
+    else if (arg == "--resolution" && i + 1 < argc)
+      ShapeResolution = std::stoi(argv[++i]);
+    else if (arg == "--counts" && i + 1 < argc)
+    {
+      counts.clear();
+      std::stringstream list(argv[++i]);
+      std::string item;
+      while (std::getline(list, item, ','))
+      {
+        counts.push_back(std::stoul(item));
+      }
+    }
     else if (arg == "-h" || arg == "--help")
     {
       std::cout << "usage: " << argv[0]
-                << " [--samples N] [--target V] [--cad] [--threads T] [--scaling] [--envelope]"
-                   " [--error-samples S] [--shape torus|sphere|box] mesh...\n";
+                << " [--samples N] [--target V] [--cad] [--threads T] [--scaling]"
+                   " [--counts N1,N2,...] [--envelope] [--error-samples S]"
+                   " [--shape torus|sphere|box] [--resolution R] mesh...\n";
       return 0;
     }
     else
@@ -298,7 +332,9 @@ int main(int argc, char* argv[])
           PrintStages(name, mesh.Triangles.size(), samples, stages);
           continue;
         }
-        const std::size_t counts[] = { 10000, 25000, 50000, 100000, 200000 };
+        PrintStages(name + " (input)", mesh.Triangles.size(), 0, loading);
+        // The memory the loaded mesh holds, which every run starts from.
+        const double baseline = StatusMB("VmRSS:");
         std::vector<std::vector<Stage>> runs;
         for (std::size_t n : counts)
         {
@@ -323,6 +359,35 @@ int main(int argc, char* argv[])
             " %s %.2f", runs[0][s].Name.c_str(), (n * sxy - sx * sy) / (n * sxx - sx * sx));
         }
         std::printf("\n");
+        // Samples against the whole run's time and peak memory, and the
+        // growth exponent of the memory a run adds to the loaded mesh.
+        std::printf("%-22s samples | triangles | seconds | peak MB | MB above the loaded mesh\n",
+          name.c_str());
+        std::vector<double> xs, ys;
+        for (std::size_t r = 0; r < runs.size(); ++r)
+        {
+          double seconds = 0.0, peak = 0.0;
+          for (const Stage& stage : runs[r])
+          {
+            seconds += stage.Seconds;
+            peak = std::max(peak, stage.PeakMB);
+          }
+          std::printf("%-22s %7zu | %9zu | %7.2f | %7.0f | %.0f\n", "", counts[r],
+            mesh.Triangles.size(), seconds, peak, peak - baseline);
+          xs.push_back(std::log(double(counts[r])));
+          ys.push_back(std::log(std::max(peak - baseline, 1.0)));
+        }
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        const double n = static_cast<double>(xs.size());
+        for (std::size_t r = 0; r < xs.size(); ++r)
+        {
+          sx += xs[r];
+          sy += ys[r];
+          sxx += xs[r] * xs[r];
+          sxy += xs[r] * ys[r];
+        }
+        std::printf("%-22s memory growth exponent (MB above the mesh ~ samples^k): %.2f\n",
+          name.c_str(), (n * sxy - sx * sy) / (n * sxx - sx * sx));
       }
       return 0;
     });

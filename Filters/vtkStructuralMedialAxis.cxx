@@ -3,11 +3,13 @@
 
 #include "vtkErrorEventText.h"
 #include "vtkMedialMeshConversion.h"
+#include "vtkSurfacePreparation.h"
 
 #include "vtkAtlasMedialAxisSimplifier.h"
 #include "vtkBlueNoiseSurfaceSampler.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
@@ -15,13 +17,17 @@
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkQMatSimplifier.h"
 #include "vtkRestrictedVoronoiDiagram.h"
 #include "vtkSlabReconstructor.h"
+#include "vtkSmartPointer.h"
 #include "vtkVoronoiMedialAxis.h"
 
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -83,6 +89,145 @@ struct StageObserver
     self->Error = medialaxis::ErrorEventMessage(callData);
   }
 };
+// A stage's surface error names places in the local frame; the same check
+// on the input itself gives them in the input's coordinates.
+std::string InInputFrame(const std::string& message, vtkPolyData* local, vtkPolyData* input)
+{
+  vtkNew<vtkPolyData> unused;
+  const std::string localError = medialaxis::PrepareSurfacePolyData(local, unused).Error;
+  const std::string inputError = medialaxis::PrepareSurfacePolyData(input, unused).Error;
+  const std::size_t at = localError.empty() ? std::string::npos : message.find(localError);
+  if (at == std::string::npos || inputError.empty())
+  {
+    return message;
+  }
+  return message.substr(0, at) + inputError + message.substr(at + localError.size());
+}
+
+// The chain runs on the surface moved to the origin and scaled by a power of
+// two to a box about one unit across, and its results are moved back. Far
+// from the origin (an offset of 1e6) circumcentres and distances then keep
+// their precision, and at any scale (1e-30, 1e30) the chain does exactly
+// the arithmetic it does at unit size: scaling by a power of two is exact.
+struct LocalFrame
+{
+  double Centre[3] = { 0.0, 0.0, 0.0 };
+  double Scale = 1.0; // a power of two
+
+  explicit LocalFrame(vtkPoints* points)
+  {
+    double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+    for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      points->GetPoint(i, p);
+      for (int k = 0; k < 3; ++k)
+      {
+        if (!std::isfinite(p[k]))
+        {
+          return; // left to the stages to refuse, in the input's own terms
+        }
+        lo[k] = std::min(lo[k], p[k]);
+        hi[k] = std::max(hi[k], p[k]);
+      }
+    }
+    const double diagonal = std::sqrt(
+      std::pow(hi[0] - lo[0], 2) + std::pow(hi[1] - lo[1], 2) + std::pow(hi[2] - lo[2], 2));
+    if (!(diagonal > 0.0) || !std::isfinite(diagonal))
+    {
+      return;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Centre[k] = 0.5 * lo[k] + 0.5 * hi[k];
+    }
+    this->Scale = std::ldexp(1.0, -std::ilogb(diagonal));
+  }
+
+  vtkSmartPointer<vtkPoints> ToLocal(vtkPoints* points) const
+  {
+    auto local = vtkSmartPointer<vtkPoints>::New();
+    local->SetDataTypeToDouble();
+    local->SetNumberOfPoints(points->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      points->GetPoint(i, p);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = (p[k] - this->Centre[k]) * this->Scale;
+      }
+      local->SetPoint(i, p);
+    }
+    return local;
+  }
+
+  void ToWorld(vtkDataArray* positions) const
+  {
+    for (vtkIdType i = 0; positions && i < positions->GetNumberOfTuples(); ++i)
+    {
+      double p[3];
+      positions->GetTuple(i, p);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = p[k] / this->Scale + this->Centre[k];
+      }
+      positions->SetTuple(i, p);
+    }
+  }
+
+  // Lengths scale with 1 / Scale, areas with its square.
+  void ScaleBack(vtkDataArray* values, int power) const
+  {
+    const double factor = std::pow(this->Scale, -power);
+    for (vtkIdType i = 0; values && i < values->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < values->GetNumberOfComponents(); ++c)
+      {
+        values->SetComponent(i, c, values->GetComponent(i, c) * factor);
+      }
+    }
+  }
+
+  // A stage's output moved back: its points, and its arrays that are
+  // positions, lengths or areas, deep-copied first (stages share them).
+  void ToWorld(vtkPolyData* data) const
+  {
+    if (this->Scale == 1.0 && this->Centre[0] == 0.0 && this->Centre[1] == 0.0 &&
+      this->Centre[2] == 0.0)
+    {
+      return;
+    }
+    if (data->GetPoints())
+    {
+      vtkNew<vtkPoints> points; // double: far from the origin float would round
+      points->SetDataTypeToDouble();
+      points->GetData()->DeepCopy(data->GetPoints()->GetData());
+      this->ToWorld(points->GetData());
+      data->SetPoints(points);
+    }
+    // Positions become double: far from the origin float would round them.
+    auto copied = [](vtkFieldData* fields, const char* name, bool position) -> vtkDataArray*
+    {
+      vtkDataArray* shared = fields->GetArray(name);
+      if (!shared)
+      {
+        return nullptr;
+      }
+      vtkSmartPointer<vtkDataArray> copy = position
+        ? vtkSmartPointer<vtkDataArray>(vtkSmartPointer<vtkDoubleArray>::New())
+        : vtk::TakeSmartPointer(shared->NewInstance());
+      copy->DeepCopy(shared);
+      copy->SetName(name);
+      fields->AddArray(copy); // replaces the shared array of that name
+      return copy;
+    };
+    this->ScaleBack(copied(data->GetPointData(), "Radius", false), 1);
+    this->ScaleBack(copied(data->GetPointData(), "CellArea", false), 2);
+    this->ToWorld(copied(data->GetPointData(), "CellCentroid", true));
+    this->ToWorld(copied(data->GetFieldData(), "SitePositions", true));
+  }
+};
 }
 
 int vtkStructuralMedialAxis::RequestData(
@@ -97,16 +242,23 @@ int vtkStructuralMedialAxis::RequestData(
   correspondence->Initialize();
   sitesOut->Initialize();
   envelopeOut->Initialize();
-  if (!input || input->GetNumberOfPolys() == 0)
+  if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
-    vtkErrorMacro(<< "the input has no polygons: give a closed triangle surface");
+    vtkErrorMacro(<< "surface has no polygons (it has " << (input ? input->GetNumberOfLines() : 0)
+                  << " line and " << (input ? input->GetNumberOfVerts() : 0)
+                  << " vertex cells): give a closed triangle surface");
     return 0;
   }
 
-  // The stages run on a shallow copy, so that this filter's input pipeline
-  // is not re-executed by them.
+  // The stages run on a copy in the local frame, so that this filter's input
+  // pipeline is not re-executed by them.
+  const LocalFrame frame(input->GetPoints());
   vtkNew<vtkPolyData> surface;
   surface->ShallowCopy(input);
+  if (input->GetPoints())
+  {
+    surface->SetPoints(frame.ToLocal(input->GetPoints()));
+  }
   vtkNew<vtkBlueNoiseSurfaceSampler> sampler;
   sampler->SetInputData(surface);
   sampler->SetNumberOfSamples(this->NumberOfSamples);
@@ -173,8 +325,9 @@ int vtkStructuralMedialAxis::RequestData(
     }
     if (!ok || !observer.Error.empty())
     {
-      vtkErrorMacro(<< "stage " << stage.Name
-                    << " failed: " << (observer.Error.empty() ? "no output" : observer.Error));
+      vtkErrorMacro(<< "stage " << stage.Name << " failed: "
+                    << (observer.Error.empty() ? "no output"
+                                               : InInputFrame(observer.Error, surface, input)));
       return 0;
     }
     times.emplace_back(stage.Name, seconds);
@@ -196,6 +349,11 @@ int vtkStructuralMedialAxis::RequestData(
     correspondence->ShallowCopy(simplifier->GetOutputDataObject(1));
   }
   sitesOut->ShallowCopy(rvd->GetOutputDataObject(1));
+  vtkNew<vtkPolyData> localMat; // for the envelope, built in the local frame
+  localMat->ShallowCopy(mat);
+  frame.ToWorld(mat);
+  frame.ToWorld(correspondence);
+  frame.ToWorld(sitesOut);
   // Per-stage times and counts travel with the medial mesh.
   vtkNew<vtkFieldData> fields;
   fields->DeepCopy(mat->GetFieldData()); // the simplifier's arrays are shared
@@ -219,10 +377,8 @@ int vtkStructuralMedialAxis::RequestData(
   if (this->GenerateEnvelope)
   {
     // The union of the medial primitives, for display (fast, overlapping).
-    vtkNew<vtkPolyData> medial;
-    medial->ShallowCopy(mat);
     vtkNew<vtkSlabReconstructor> envelope;
-    envelope->SetInputData(medial);
+    envelope->SetInputData(localMat);
     envelope->SetModeToPrimitives();
     envelope->SetNumberOfThreads(this->NumberOfThreads);
     const auto begin = std::chrono::steady_clock::now();
@@ -230,6 +386,7 @@ int vtkStructuralMedialAxis::RequestData(
     medialaxis::AddFieldDouble(mat, "EnvelopeSeconds",
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
     envelopeOut->ShallowCopy(envelope->GetOutput());
+    frame.ToWorld(envelopeOut);
   }
   this->UpdateProgress(1.0);
   return 1;

@@ -26,6 +26,11 @@
  * abort stops the running stage and leaves the outputs empty. Errors of a
  * stage (e.g. an open or non-manifold surface) are reported with the stage's
  * name and leave the outputs empty.
+ *
+ * The stages run on the surface moved to the origin and scaled by a power of
+ * two to about unit size; the outputs are moved back. A surface far from the
+ * origin (an offset of 1e6) or at any scale (1e-30, 1e30) thus gives its
+ * medial axis with the precision of a unit-sized one.
  */
 #ifndef vtkStructuralMedialAxis_h
 #define vtkStructuralMedialAxis_h

@@ -8,8 +8,64 @@
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
 
+#include <mutex>
+#include <tuple>
+
 namespace medialaxis
 {
+namespace
+{
+// The self-intersection test is the costliest step of preparation, and the
+// stages of a pipeline prepare the same input one after another (three in
+// the one-click filter). The crossings of the last input are remembered,
+// keyed by its points and cells with their modification times (a new or
+// modified VTK object gets a new time, so a key is never reused) and by the
+// options that shape the triangles.
+class CrossingsMemo
+{
+public:
+  using Key = std::tuple<const void*, vtkMTimeType, const void*, vtkMTimeType, const void*,
+    vtkMTimeType, double, bool>;
+
+  static Key KeyOf(vtkPolyData* input, const SurfacePreparationOptions& options)
+  {
+    auto stamp = [](vtkObject* o) { return o ? o->GetMTime() : vtkMTimeType(0); };
+    return Key(input->GetPoints(), stamp(input->GetPoints()), input->GetPolys(),
+      stamp(input->GetPolys()), input->GetStrips(), stamp(input->GetStrips()),
+      options.RelativeMergeTolerance, options.FixOrientation);
+  }
+  bool Find(const Key& key, std::vector<TriangleCrossing>& crossings)
+  {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    if (this->Valid && key == this->Last)
+    {
+      crossings = this->Crossings;
+      return true;
+    }
+    return false;
+  }
+  void Remember(const Key& key, const std::vector<TriangleCrossing>& crossings)
+  {
+    std::lock_guard<std::mutex> lock(this->Mutex);
+    this->Last = key;
+    this->Crossings = crossings;
+    this->Valid = true;
+  }
+
+private:
+  std::mutex Mutex;
+  bool Valid = false;
+  Key Last;
+  std::vector<TriangleCrossing> Crossings;
+};
+
+CrossingsMemo& Memo()
+{
+  static CrossingsMemo memo;
+  return memo;
+}
+}
+
 void TriangleMeshToPolyData(const TriangleMesh& mesh, vtkPolyData* output)
 {
   vtkNew<vtkPoints> points;
@@ -100,7 +156,18 @@ SurfacePreparationReport PrepareSurfaceMesh(
     }
   }
 
-  report = PrepareSurface(soup, prepared, options);
+  const CrossingsMemo::Key key = CrossingsMemo::KeyOf(input, options);
+  std::vector<TriangleCrossing> known;
+  SurfacePreparationOptions memoOptions = options;
+  if (!options.KnownCrossings && Memo().Find(key, known))
+  {
+    memoOptions.KnownCrossings = &known;
+  }
+  report = PrepareSurface(soup, prepared, memoOptions);
+  if (report.SelfIntersectionTested && !memoOptions.KnownCrossings)
+  {
+    Memo().Remember(key, report.Crossings);
+  }
   if (notTriangles)
   {
     report.Notes.push_back(

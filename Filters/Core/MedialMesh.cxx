@@ -32,10 +32,11 @@ std::size_t CountRepeats(std::vector<T> items)
   return repeats;
 }
 
-std::string Plural(std::size_t n, const char* word)
+// "1 radius", "2 radii": irregular plurals are spelled out by the caller.
+std::string Plural(std::size_t n, const char* singular, const char* plural)
 {
   std::ostringstream s;
-  s << n << ' ' << word << (n == 1 ? "" : "s");
+  s << n << ' ' << (n == 1 ? singular : plural);
   return s.str();
 }
 }
@@ -61,14 +62,14 @@ MedialMeshCheck ValidateMedialMesh(const MedialMesh& mesh)
   }
   if (nonFinitePoints)
   {
-    check.Message =
-      "medial mesh has " + Plural(nonFinitePoints, "vertex") + " with NaN or infinite coordinates";
+    check.Message = "medial mesh has " + Plural(nonFinitePoints, "vertex", "vertices") +
+      " with NaN or infinite coordinates";
     return check;
   }
   if (badRadii)
   {
-    check.Message =
-      "medial mesh has " + Plural(badRadii, "radius") + " that are negative, NaN or infinite";
+    check.Message = "medial mesh has " + Plural(badRadii, "radius that is", "radii that are") +
+      " negative, NaN or infinite";
     return check;
   }
 
@@ -92,13 +93,13 @@ MedialMeshCheck ValidateMedialMesh(const MedialMesh& mesh)
   }
   if (badIndices)
   {
-    check.Message = "medial mesh has " + Plural(badIndices, "cell") +
+    check.Message = "medial mesh has " + Plural(badIndices, "cell", "cells") +
       " referencing a vertex index outside [0, " + std::to_string(nv) + ")";
     return check;
   }
   if (degenerate)
   {
-    check.Message = "medial mesh has " + Plural(degenerate, "degenerate cell") +
+    check.Message = "medial mesh has " + Plural(degenerate, "degenerate cell", "degenerate cells") +
       " (a vertex repeated within an edge or triangle)";
     return check;
   }
@@ -106,8 +107,9 @@ MedialMeshCheck ValidateMedialMesh(const MedialMesh& mesh)
   const std::size_t duplicateFaces = CountRepeats(std::move(faces));
   if (duplicateEdges || duplicateFaces)
   {
-    check.Message = "medial mesh has " + Plural(duplicateFaces, "duplicate triangle") + " and " +
-      Plural(duplicateEdges, "duplicate edge");
+    check.Message = "medial mesh has " +
+      Plural(duplicateFaces, "duplicate triangle", "duplicate triangles") + " and " +
+      Plural(duplicateEdges, "duplicate edge", "duplicate edges");
     return check;
   }
   return check;

@@ -2,11 +2,13 @@
 #include "SurfacePreparation.h"
 
 #include "DisjointSets.h"
+#include "SelfIntersection.h"
 #include "TriangleAdjacency.h"
 #include "Vec3.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <unordered_map>
 
@@ -288,6 +290,62 @@ double SignedVolumeOf(const std::vector<Point3>& points, const std::vector<Trian
     sixVolume += Dot(a, Cross(b, c));
   }
   return sixVolume / 6.0;
+}
+
+// Whether triangles a and b are within `rings` vertex rings of each other on
+// the surface (a breadth-first search over the vertex graph from a's
+// corners). Crossings of such near neighbours are local folds of the mesh;
+// crossings of triangles far apart on the surface mean it passes through
+// itself.
+bool AreSurfaceNeighbours(const std::vector<Triangle>& triangles,
+  const std::vector<std::vector<Index>>& vertexTriangles, Index a, Index b, int rings)
+{
+  std::unordered_map<Index, int> depth;
+  std::vector<Index> frontier(triangles[a].begin(), triangles[a].end());
+  for (Index v : frontier)
+  {
+    depth.emplace(v, 0);
+  }
+  auto isCornerOfB = [&](Index v)
+  { return v == triangles[b][0] || v == triangles[b][1] || v == triangles[b][2]; };
+  for (int ring = 0; ring <= rings; ++ring)
+  {
+    std::vector<Index> next;
+    for (Index v : frontier)
+    {
+      if (isCornerOfB(v))
+      {
+        return true;
+      }
+      for (Index t : vertexTriangles[v])
+      {
+        for (Index w : triangles[t])
+        {
+          if (depth.emplace(w, ring + 1).second)
+          {
+            next.push_back(w);
+          }
+        }
+      }
+    }
+    frontier.swap(next);
+  }
+  return false;
+}
+
+std::string Percent(double fraction)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.2g%%", 100.0 * fraction);
+  return text;
+}
+
+std::string Location(const TriangleCrossing& c)
+{
+  char text[96];
+  std::snprintf(text, sizeof(text), "(%.6g, %.6g, %.6g)", 0.5 * (c.Lo[0] + c.Hi[0]),
+    0.5 * (c.Lo[1] + c.Hi[1]), 0.5 * (c.Lo[2] + c.Hi[2]));
+  return text;
 }
 }
 
@@ -610,7 +668,86 @@ SurfacePreparationReport PrepareSurface(
   }
   report.Components = members.size();
 
-  // 8. Outward orientation: a shell nested inside an odd number of others
+  // 8. Self-intersection. Shells that cross each other, or a shell passing
+  // through itself, bound no solid; the nesting test below would misread
+  // them (overlapping spheres would become a sphere with a cavity). Scanned
+  // and decimated meshes often have a few neighbouring triangles folded over
+  // each other; those are local and only noted.
+  report.Crossings = options.KnownCrossings ? *options.KnownCrossings
+                                            : FindSelfIntersections(input.Points, triangles);
+  report.SelfIntersectionTested = true;
+  const std::vector<TriangleCrossing>& crossings = report.Crossings;
+  report.SelfIntersections = crossings.size();
+  if (!crossings.empty())
+  {
+    const TriangleCrossing* betweenShells = nullptr;
+    for (const TriangleCrossing& c : crossings)
+    {
+      if (component[c.A] != component[c.B])
+      {
+        betweenShells = betweenShells ? betweenShells : &c;
+        ++report.CrossingShells;
+      }
+    }
+    if (betweenShells)
+    {
+      report.Error = "surface intersects itself: " +
+        Count(report.CrossingShells, "pair of triangles", "pairs of triangles") +
+        " of separate shells cross, e.g. near " + Location(*betweenShells) +
+        " (overlapping shells must be merged into one surface first)";
+      return report;
+    }
+    std::vector<std::vector<Index>> vertexTriangles(input.Points.size());
+    for (std::size_t t = 0; t < nt; ++t)
+    {
+      for (Index v : triangles[t])
+      {
+        vertexTriangles[v].push_back(static_cast<Index>(t));
+      }
+    }
+    // Where the surface passes through itself: the box of all crossings of
+    // triangles far apart on the surface.
+    const TriangleCrossing* farApart = nullptr;
+    Point3 lo{ HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+    for (const TriangleCrossing& c : crossings)
+    {
+      if (!AreSurfaceNeighbours(triangles, vertexTriangles, c.A, c.B, options.LocalFoldRings))
+      {
+        farApart = farApart ? farApart : &c;
+        ++report.CrossingFarApart;
+        for (int k = 0; k < 3; ++k)
+        {
+          lo[k] = std::min(lo[k], c.Lo[k]);
+          hi[k] = std::max(hi[k], c.Hi[k]);
+        }
+      }
+    }
+    report.PassThroughExtent = farApart ? Norm(hi - lo) / diagonal : 0.0;
+    if (report.PassThroughExtent > options.MaxPassThroughExtent)
+    {
+      report.Error = "surface intersects itself: " +
+        Count(report.CrossingFarApart, "pair of triangles", "pairs of triangles") +
+        " far apart on the surface cross, e.g. near " + Location(*farApart) +
+        " (the surface passes through itself)";
+      return report;
+    }
+    const std::size_t folds = crossings.size() - report.CrossingFarApart;
+    if (folds)
+    {
+      report.Notes.push_back(Count(folds, "pair of neighbouring triangles overlaps",
+                               "pairs of neighbouring triangles overlap") +
+        " (local folds): kept");
+    }
+    if (farApart)
+    {
+      report.Notes.push_back("the surface touches or passes through itself near " +
+        Location(*farApart) + " (" + Count(report.CrossingFarApart, "pair", "pairs") +
+        " of triangles, within " + Percent(report.PassThroughExtent) +
+        " of the diagonal): kept, the medial axis may be wrong there");
+    }
+  }
+
+  // 9. Outward orientation: a shell nested inside an odd number of others
   // bounds a cavity and must face inward; every other shell faces outward.
   // The nesting test costs components x triangles, so it is skipped (every
   // shell made outward) for surfaces with very many components.
@@ -653,7 +790,7 @@ SurfacePreparationReport PrepareSurface(
     }
   }
 
-  // 9. Compact: keep only the points that triangles use, in first-use order.
+  // 10. Compact: keep only the points that triangles use, in first-use order.
   std::vector<Index> newId(input.Points.size(), -1);
   output.Triangles.reserve(triangles.size());
   for (Triangle t : triangles)

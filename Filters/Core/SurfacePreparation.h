@@ -6,6 +6,7 @@
 #define medialaxis_SurfacePreparation_h
 
 #include "PolygonMesh.h"
+#include "SelfIntersection.h"
 
 #include <string>
 #include <vector>
@@ -19,6 +20,18 @@ struct SurfacePreparationOptions
   double RelativeMergeTolerance = 1e-10;
   /// Make the orientation consistent and outward instead of failing.
   bool FixOrientation = true;
+  /// Triangles that cross are a local fold of the mesh (kept, with a note)
+  /// when they are within this many vertex rings of each other on the
+  /// surface; farther apart, the surface passes through itself.
+  int LocalFoldRings = 2;
+  /// A surface passing through itself is refused unless all such crossings
+  /// fit in a box this fraction of the bounding-box diagonal across (a tiny
+  /// contact, e.g. a scanned limb touching the body: kept, with a note).
+  /// Shells that cross each other are always refused.
+  double MaxPassThroughExtent = 0.01;
+  /// The crossings an earlier run found on the same input with the same
+  /// options (its report's Crossings): the costly exact test is skipped.
+  const std::vector<TriangleCrossing>* KnownCrossings = nullptr;
 };
 
 struct SurfacePreparationReport
@@ -43,6 +56,12 @@ struct SurfacePreparationReport
   std::size_t ReorientedTriangles = 0; // flipped to agree with their neighbours
   std::size_t InwardComponents = 0;    // components flipped to face outward
   std::size_t Components = 0;          // connected shells
+  std::size_t SelfIntersections = 0;   // pairs of triangles that cross
+  std::size_t CrossingShells = 0;      // of them, pairs from separate shells
+  std::size_t CrossingFarApart = 0;    // of them, pairs far apart on one shell
+  double PassThroughExtent = 0.0;      // box of those crossings / diagonal
+  bool SelfIntersectionTested = false; // the run got as far as that test
+  std::vector<TriangleCrossing> Crossings;
   double Area = 0.0;
   double Volume = 0.0; // enclosed volume after orientation fixing
 

@@ -43,7 +43,11 @@ TEST(MedialMeshValidation, RadiusDefects)
 {
   MedialMesh m = TwoTriangles();
   m.Radii[2] = -1.0;
-  EXPECT_NE(Check(m).find("1 radius that are negative"), std::string::npos) << Check(m);
+  EXPECT_NE(Check(m).find("has 1 radius that is negative"), std::string::npos) << Check(m);
+  m.Radii[1] = std::nan("");
+  EXPECT_NE(Check(m).find("has 2 radii that are negative, NaN or infinite"), std::string::npos)
+    << Check(m);
+  m.Radii[1] = 1.0;
   m.Radii[2] = std::nan("");
   EXPECT_NE(Check(m).find("negative, NaN or infinite"), std::string::npos);
   m.Radii.pop_back();
@@ -70,7 +74,11 @@ TEST(MedialMeshValidation, CellDefects)
 
   m = TwoTriangles();
   m.Centers[1][0] = INFINITY;
-  EXPECT_NE(Check(m).find("NaN or infinite coordinates"), std::string::npos) << Check(m);
+  EXPECT_NE(Check(m).find("has 1 vertex with NaN or infinite coordinates"), std::string::npos)
+    << Check(m);
+  m.Centers[2][1] = std::nan("");
+  EXPECT_NE(Check(m).find("has 2 vertices with NaN or infinite coordinates"), std::string::npos)
+    << Check(m);
 }
 
 TEST(MedialMeshValidation, PolyDataContract)

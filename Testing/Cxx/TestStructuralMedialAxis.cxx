@@ -14,11 +14,13 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <thread>
 #include <vector>
 
 using namespace medialaxis;
@@ -187,4 +189,83 @@ TEST(StructuralMedialAxis, StageErrorsNameTheStageAndTheDefect)
     message.find("stage Sampling failed: cannot sample: surface is not closed: 3 boundary edges"),
     std::string::npos)
     << message;
+}
+
+namespace
+{
+// Everything a run produces that could differ: medial points, radii and
+// cells, and the envelope's points, as exact values.
+struct Fingerprint
+{
+  std::vector<double> Values;
+  std::vector<vtkIdType> Cells;
+  bool operator==(const Fingerprint& o) const
+  {
+    return this->Values == o.Values && this->Cells == o.Cells;
+  }
+};
+
+Fingerprint RunOnShape(int shape)
+{
+  vtkNew<vtkAnalyticShapeSource> source;
+  if (shape == 0)
+  {
+    source->SetShapeToTorus();
+  }
+  else
+  {
+    source->SetShapeToRoundedBox();
+    source->SetFilletRadius(0.2);
+  }
+  source->SetResolution(16);
+  vtkNew<vtkStructuralMedialAxis> filter;
+  filter->SetInputConnection(source->GetOutputPort());
+  filter->SetNumberOfSamples(3000);
+  filter->SetTargetNumberOfVertices(300);
+  filter->SetPreserveSharpFeatures(shape == 1);
+  filter->Update();
+  Fingerprint f;
+  for (int port : { 0, 3 })
+  {
+    vtkPolyData* out = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(port));
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      out->GetPoint(i, p);
+      f.Values.insert(f.Values.end(), p, p + 3);
+    }
+    for (vtkCellArray* cells : { out->GetPolys(), out->GetLines(), out->GetVerts() })
+    {
+      for (vtkIdType i = 0; i < cells->GetConnectivityArray()->GetNumberOfValues(); ++i)
+      {
+        f.Cells.push_back(static_cast<vtkIdType>(cells->GetConnectivityArray()->GetTuple1(i)));
+      }
+    }
+  }
+  vtkDataArray* radii = filter->GetOutput(0)->GetPointData()->GetArray("Radius");
+  for (vtkIdType i = 0; i < radii->GetNumberOfTuples(); ++i)
+  {
+    f.Values.push_back(radii->GetTuple1(i));
+  }
+  return f;
+}
+}
+
+TEST(StructuralMedialAxis, ConcurrentPipelinesGiveTheResultsOfRunningAlone)
+{
+  // Two pipelines on different inputs, each alone, then both at once in two
+  // threads of this process: bit-identical results.
+  const Fingerprint torus = RunOnShape(0), box = RunOnShape(1);
+  ASSERT_FALSE(torus.Values.empty());
+  ASSERT_FALSE(box.Values.empty());
+  for (int round = 0; round < 2; ++round)
+  {
+    Fingerprint concurrentTorus, concurrentBox;
+    std::thread first([&] { concurrentTorus = RunOnShape(0); });
+    std::thread second([&] { concurrentBox = RunOnShape(1); });
+    first.join();
+    second.join();
+    EXPECT_TRUE(concurrentTorus == torus) << round;
+    EXPECT_TRUE(concurrentBox == box) << round;
+  }
 }

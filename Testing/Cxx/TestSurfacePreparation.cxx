@@ -3,7 +3,9 @@
 #include "AnalyticShapes.h"
 #include "SurfacePreparation.h"
 #include "TestHelpers.h"
+#include "Vec3.h"
 #include "vtkMedialSurfaceValidator.h"
+#include "vtkSurfacePreparation.h"
 
 #include "vtkCellArray.h"
 #include "vtkPolyData.h"
@@ -254,6 +256,80 @@ TEST(SurfacePreparation, NestedShellBecomesACavity)
   EXPECT_NEAR(r.Volume, SignedVolume(outer) - SignedVolume(inner), 1e-9);
 }
 
+TEST(SurfacePreparation, OverlappingShellsAreRefusedAsSelfIntersecting)
+{
+  // Two spheres that overlap bound no solid as given: their union would have
+  // to be computed first. Without the test the second one would be read as a
+  // cavity of the first.
+  TriangleMesh shifted = MakeSphere(1.0, 8);
+  for (Point3& p : shifted.Points)
+  {
+    p[0] += 0.5;
+  }
+  TriangleMesh out;
+  const auto r = Prepare(Append(MakeSphere(1.0, 8), shifted), out);
+  EXPECT_GT(r.SelfIntersections, 0u);
+  EXPECT_TRUE(Contains(r.Error, "surface intersects itself: ")) << r.Error;
+  EXPECT_EQ(r.CrossingShells, r.SelfIntersections);
+  EXPECT_TRUE(Contains(r.Error, "pairs of triangles of separate shells cross, e.g. near ("))
+    << r.Error;
+  EXPECT_TRUE(Contains(r.Error, "(overlapping shells must be merged into one surface first)"))
+    << r.Error;
+
+  // Two exact copies are one surface: the copies' triangles are duplicates.
+  const auto copies = Prepare(Append(MakeSphere(1.0, 8), MakeSphere(1.0, 8)), out);
+  ASSERT_TRUE(copies.Ok()) << copies.Error;
+  EXPECT_EQ(copies.Components, 1u);
+  EXPECT_EQ(copies.DuplicateTriangles, MakeSphere(1.0, 8).Triangles.size());
+  EXPECT_EQ(copies.SelfIntersections, 0u);
+}
+
+TEST(SurfacePreparation, SurfaceThroughItselfIsRefused)
+{
+  // A sphere whose north pole is pulled down through the south pole: the
+  // triangles around it cross the southern cap.
+  TriangleMesh sphere = MakeSphere(1.0, 8);
+  std::size_t north = 0;
+  for (std::size_t i = 1; i < sphere.Points.size(); ++i)
+  {
+    north = sphere.Points[i][2] > sphere.Points[north][2] ? i : north;
+  }
+  sphere.Points[north] = { 0.05, 0.03, -1.5 };
+  TriangleMesh out;
+  const auto r = Prepare(sphere, out);
+  EXPECT_GT(r.SelfIntersections, 0u);
+  EXPECT_TRUE(Contains(r.Error, "surface intersects itself: ")) << r.Error;
+  EXPECT_TRUE(Contains(r.Error, "far apart on the surface cross, e.g. near (")) << r.Error;
+  EXPECT_TRUE(Contains(r.Error, "(the surface passes through itself)")) << r.Error;
+  EXPECT_GT(r.CrossingFarApart, 0u);
+
+  // Touching along shared edges and vertices is not crossing.
+  const auto clean = Prepare(MakeSphere(1.0, 8), out);
+  EXPECT_TRUE(clean.Ok()) << clean.Error;
+  EXPECT_EQ(clean.SelfIntersections, 0u);
+}
+
+TEST(SurfacePreparation, LocalFoldIsKeptWithANote)
+{
+  // One vertex dragged over its neighbour: the two fans overlap, a fold of a
+  // few neighbouring triangles as scanned and decimated meshes have them.
+  TriangleMesh sphere = MakeSphere(1.0, 16);
+  const Triangle& t = sphere.Triangles[sphere.Triangles.size() / 2];
+  const Point3 moved = sphere.Points[t[0]], neighbour = sphere.Points[t[1]];
+  sphere.Points[t[0]] = neighbour + 0.3 * (neighbour - moved);
+  TriangleMesh out;
+  const auto r = Prepare(sphere, out);
+  ASSERT_TRUE(r.Ok()) << r.Error;
+  EXPECT_GT(r.SelfIntersections, 0u);
+  EXPECT_EQ(r.CrossingFarApart, 0u);
+  bool noted = false;
+  for (const std::string& note : r.Notes)
+  {
+    noted = noted || Contains(note, "neighbouring triangles overlap (local folds): kept");
+  }
+  EXPECT_TRUE(noted);
+}
+
 TEST(SurfacePreparation, NonOrientableSurfaceIsRefused)
 {
   // A combinatorial Klein bottle: an n x m torus grid whose last column is
@@ -382,4 +458,30 @@ TEST(MedialSurfaceValidator, OpenMeshIsRefused)
   EXPECT_FALSE(validator->GetValid());
   EXPECT_EQ(validator->GetNumberOfBoundaryEdges(), 4);
   EXPECT_EQ(std::string(validator->GetErrorMessage()), "surface is not closed: 4 boundary edges");
+}
+
+TEST(MedialSurfaceValidator, RemembersSelfIntersectionsOnlyForAnUnchangedInput)
+{
+  // Stages that prepare the same poly data one after another reuse the
+  // self-intersection test; any change to the points gives a fresh test.
+  const TriangleMesh sphere = MakeSphere(1.0, 8);
+  auto surface = test::ToPolyData(sphere);
+  vtkNew<vtkPolyData> out;
+  SurfacePreparationReport first = PrepareSurfacePolyData(surface, out);
+  SurfacePreparationReport again = PrepareSurfacePolyData(surface, out);
+  ASSERT_TRUE(first.Ok()) << first.Error;
+  EXPECT_TRUE(again.Ok()) << again.Error;
+
+  vtkIdType pole = 0;
+  for (vtkIdType i = 1; i < surface->GetNumberOfPoints(); ++i)
+  {
+    pole = surface->GetPoint(i)[2] > surface->GetPoint(pole)[2] ? i : pole;
+  }
+  surface->GetPoints()->SetPoint(pole, 0.05, 0.03, -1.5);
+  surface->GetPoints()->Modified();
+  first = PrepareSurfacePolyData(surface, out);
+  again = PrepareSurfacePolyData(surface, out);
+  EXPECT_TRUE(Contains(first.Error, "the surface passes through itself")) << first.Error;
+  EXPECT_EQ(again.Error, first.Error);
+  EXPECT_EQ(again.CrossingFarApart, first.CrossingFarApart);
 }

@@ -9,6 +9,7 @@ import unittest
 import vtk
 
 import medialaxis
+import bad_inputs
 
 TOOL = os.environ["MEDIALAXIS_TOOL"]
 
@@ -109,129 +110,46 @@ class CommandLineTest(unittest.TestCase):
         self.assertIn("no such file", result.stderr)
 
     def test_bad_inputs_give_a_result_or_a_clear_error(self):
-        """Issue 11's bad inputs through the tool: each is either computed
-        (exit 0, a medial mesh in the input's units) or refused (exit 3)
-        with a message naming the defect."""
+        """Issue 11's bad inputs (the corpus in bad_inputs.py, shared with the
+        Python API test) through the tool: each is either computed (exit 0,
+        the medial mesh checked) or refused (exit 3) with a message naming
+        the defect."""
+        settings = ["--samples", str(bad_inputs.SAMPLES), "--target", str(bad_inputs.TARGET),
+                    "--quiet"]
 
-        def sphere(radius=0.5, centre=(0, 0, 0), scale=1.0):
-            source = vtk.vtkSphereSource()
-            source.SetRadius(radius * scale)
-            source.SetCenter(*[c * scale for c in centre])
-            source.SetThetaResolution(16)
-            source.SetPhiResolution(12)
-            source.Update()
-            surface = vtk.vtkPolyData()
-            surface.DeepCopy(source.GetOutput())
-            surface.GetPointData().Initialize()
-            return surface
+        def medial_axis(name):
+            out = self.path("out_" + name)
+            result = run(*settings, self.path(name), out)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            reader = medialaxis.vtkMedialAxisReader()
+            reader.SetFileName(os.path.join(out, "mat.ma"))
+            reader.Update()
+            return reader.GetOutput()
 
-        def append(*parts):
-            together = vtk.vtkAppendPolyData()
-            for part in parts:
-                together.AddInputData(part)
-            together.Update()
-            return together.GetOutput()
-
-        def with_point(surface, i, xyz):
-            surface.GetPoints().SetPoint(i, *xyz)
-            return surface
-
-        def cells_only(kind):
-            surface = sphere()
-            cells = vtk.vtkCellArray()
-            for i in range(0, 10, 2):
-                cells.InsertNextCell(2 if kind == "lines" else 1)
-                cells.InsertCellPoint(i)
-                if kind == "lines":
-                    cells.InsertCellPoint(i + 1)
-            result = vtk.vtkPolyData()
-            result.SetPoints(surface.GetPoints())
-            (result.SetLines if kind == "lines" else result.SetVerts)(cells)
-            return result
-
-        def fin():  # a triangle glued to a sphere edge: 3 triangles on it
-            surface = sphere()
-            ids = vtk.vtkIdList()
-            surface.GetPolys().GetCellAtId(0, ids)
-            extra = surface.GetPoints().InsertNextPoint(2, 2, 2)
-            surface.GetPolys().InsertNextCell(3)
-            for i in (ids.GetId(0), ids.GetId(1), extra):
-                surface.GetPolys().InsertCellPoint(i)
-            return surface
-
-        def inward():
-            flip = vtk.vtkReverseSense()
-            flip.SetInputData(sphere())
-            flip.Update()
-            return flip.GetOutput()
-
-        texts = {
-            "empty.off": "",
-            "header_only.off": "OFF\n",
-            "one_triangle.off": "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-            # Four vertices on one line: flat triangles that cannot be absorbed.
-            "collinear.off": "OFF\n6 8 0\n1 1.984375 0\n0 0 2.109375\n0 0 0\n4.21875 0 0\n"
-            "0 0 1\n0 0 -1\n3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n"
-            "3 3 1 5\n3 0 3 5\n",
-        }
-        refused = {
-            "empty.off": "line 0: empty file",
-            "header_only.off": "line 1: end of file before the counts",
-            "one_triangle.off": "surface is not closed: 3 boundary edges",
-            "collinear.off": "surface is not closed",
-            "nan.vtp": "1 point with NaN or infinite coordinates",
-            "inf.vtp": "1 point with NaN or infinite coordinates",
-            "lines_only.vtp": "surface has no polygons (it has 5 line",
-            "point_cloud.vtp": "surface has no polygons (it has 0 line and 5 vertex cells)",
-            "non_manifold_edge.vtp": "1 edge is shared by more than two triangles",
-        }
-        # name -> (surface, radius bound, a point the centres stay near)
-        accepted = {
-            "inward.vtp": (inward(), 0.5, (0, 0, 0)),
-            "nested_shells.vtp": (append(sphere(), sphere(0.25)), 0.5, (0, 0, 0)),
-            "two_copies.vtp": (append(sphere(), sphere()), 0.5, (0, 0, 0)),
-            "tiny.vtp": (sphere(scale=1e-30), 0.5e-30, (0, 0, 0)),
-            "huge.vtp": (sphere(scale=1e30), 0.5e30, (0, 0, 0)),
-            "offset.vtp": (sphere(centre=(1e6, 1e6, 1e6)), 0.5, (1e6, 1e6, 1e6)),
-        }
-        surfaces = {
-            "nan.vtp": with_point(sphere(), 3, (float("nan"), 0, 0)),
-            "inf.vtp": with_point(sphere(), 3, (0, float("inf"), 0)),
-            "lines_only.vtp": cells_only("lines"),
-            "point_cloud.vtp": cells_only("verts"),
-            "non_manifold_edge.vtp": fin(),
-        }
-        surfaces.update({name: case[0] for name, case in accepted.items()})
-        for name, text in texts.items():
-            with open(self.path(name), "w") as f:
-                f.write(text)
-        for name, surface in surfaces.items():
-            writer = vtk.vtkXMLPolyDataWriter()
-            writer.SetInputData(surface)
-            writer.SetFileName(self.path(name))
-            self.assertEqual(writer.Write(), 1)
-
-        for name, phrase in refused.items():
-            with self.subTest(name):
-                result = run("--samples", "1000", "--target", "50", self.path(name), self.path("out"))
-                self.assertEqual(result.returncode, 3, result.stderr)
-                self.assertIn(phrase, result.stderr)
-        for name, (_, radius, centre) in accepted.items():
-            with self.subTest(name):
-                out = self.path("out_" + name)
-                result = run("--samples", "1000", "--target", "50", "--quiet", self.path(name), out)
-                self.assertEqual(result.returncode, 0, result.stderr)
-                reader = medialaxis.vtkMedialAxisReader()
-                reader.SetFileName(os.path.join(out, "mat.ma"))
-                reader.Update()
-                mat = reader.GetOutput()
-                self.assertEqual(mat.GetNumberOfPoints(), 50)
-                radii = mat.GetPointData().GetArray("Radius")
-                for i in range(mat.GetNumberOfPoints()):
-                    self.assertGreater(radii.GetValue(i), 0.0)
-                    self.assertLess(radii.GetValue(i), radius)
-                    p = mat.GetPoint(i)
-                    self.assertLess(max(abs(p[k] - centre[k]) for k in range(3)), radius)
+        bad_inputs.write_surface(bad_inputs.sphere(), self.path("sphere.vtp"))
+        reference = medial_axis("sphere.vtp")
+        self.assertEqual(reference.GetNumberOfPoints(), bad_inputs.TARGET)
+        for case in bad_inputs.CASES:
+            with self.subTest(case.name):
+                bad_inputs.write(case, self.path(case.name))
+                if case.refused:
+                    result = run(*settings, self.path(case.name), self.path("out"))
+                    self.assertEqual(result.returncode, 3, result.stderr)
+                    self.assertEqual(len(result.stderr.strip().splitlines()), 1, result.stderr)
+                    self.assertIn(case.refused, result.stderr)
+                else:
+                    mat = medial_axis(case.name)
+                    self.assertEqual(mat.GetNumberOfPoints(), bad_inputs.TARGET)
+                    self.assertEqual(case.check(mat, reference), [])
+        # A surface of flat triangles that cannot be absorbed (four vertices
+        # on one line) is left open.
+        with open(self.path("collinear.off"), "w") as f:
+            f.write("OFF\n6 8 0\n1 1.984375 0\n0 0 2.109375\n0 0 0\n4.21875 0 0\n"
+                    "0 0 1\n0 0 -1\n3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n"
+                    "3 3 1 5\n3 0 3 5\n")
+        result = run(*settings, self.path("collinear.off"), self.path("out"))
+        self.assertEqual(result.returncode, 3, result.stderr)
+        self.assertIn("surface is not closed", result.stderr)
 
     def test_outputs_and_report(self):
         out = self.path("out")

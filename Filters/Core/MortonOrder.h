@@ -7,6 +7,8 @@
 
 #include "MedialMesh.h" // Point3
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <utility>
@@ -52,7 +54,8 @@ std::vector<std::uint32_t> MortonOrder(std::size_t n, PointOf&& pointOf)
     }
     keys[i] = { code, static_cast<std::uint32_t>(i) };
   }
-  std::sort(keys.begin(), keys.end());
+  // Keys are distinct (the index is part of them): any sort gives this order.
+  tbb::parallel_sort(keys.begin(), keys.end());
   std::vector<std::uint32_t> order(n);
   for (std::size_t i = 0; i < n; ++i)
   {

@@ -64,9 +64,7 @@ Options:
                         = 10,000 samples, 1,000 spheres
   --samples N           surface samples (overrides the preset)
   --target N            spheres left after simplification (overrides the preset)
-  --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not; without
-                        it spike edges may also pass the link condition when
-                        that keeps the Euler characteristic (fewer spikes)
+  --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not
   --feature-angle DEG   dihedral tolerance for sharp edges (default 45)
   --strategy structural|qmat
                         simplifier: structural (default, Structural MAT's
@@ -75,6 +73,8 @@ Options:
   --fringe-collapses    let the simplifier break the link condition with
                         collapses that keep the Euler characteristic: removes
                         the fringe of thin fins along large fillets
+  --spike-collapses     the same for spike edges only: removes most spike
+                        triangles of organic shapes
   --seed S              sampler seed; same seed, same result (default 0)
   --threads T           threads for the parallel stages (0 = all, default)
   --envelope            also write envelope.vtp: the union of the medial
@@ -113,7 +113,7 @@ struct Options
   vtkIdType Samples = -1, Target = -1;
   int Sharp = -1; // -1: from the preset
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
-       Fillets = false, FringeCollapses = false, QMat = false;
+       Fillets = false, FringeCollapses = false, SpikeCollapses = false, QMat = false;
   double FeatureAngle = 45.0;
   int Seed = 0, Threads = 0;
 };
@@ -244,6 +244,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--fringe-collapses")
     {
       o.FringeCollapses = true;
+    }
+    else if (arg == "--spike-collapses")
+    {
+      o.SpikeCollapses = true;
     }
     else if (arg == "--fillets")
     {
@@ -470,8 +474,7 @@ int main(int argc, char** argv)
   }
   structural->SetFeatureAngle(o.FeatureAngle);
   structural->SetFringeCollapses(o.FringeCollapses);
-  // Spike collapses past the link condition: organic shapes only.
-  structural->SetEulerNeutralSpikeCollapses(!structural->GetPreserveSharpFeatures());
+  structural->SetEulerNeutralSpikeCollapses(o.SpikeCollapses);
   structural->SetStrategy(
     o.QMat ? vtkStructuralMedialAxis::QMat : vtkStructuralMedialAxis::Structural);
   structural->SetRandomSeed(o.Seed);

@@ -45,7 +45,6 @@ void vtkStructuralMedialAxis::SetPresetToCAD()
   this->SetNumberOfSamples(50000);
   this->SetTargetNumberOfVertices(5000);
   this->SetPreserveSharpFeatures(true);
-  this->SetEulerNeutralSpikeCollapses(false);
 }
 
 void vtkStructuralMedialAxis::SetPresetToOrganic()
@@ -53,7 +52,6 @@ void vtkStructuralMedialAxis::SetPresetToOrganic()
   this->SetNumberOfSamples(10000);
   this->SetTargetNumberOfVertices(1000);
   this->SetPreserveSharpFeatures(false);
-  this->SetEulerNeutralSpikeCollapses(true);
 }
 
 int vtkStructuralMedialAxis::FillInputPortInformation(int, vtkInformation* info)

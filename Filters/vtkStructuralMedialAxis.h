@@ -46,10 +46,10 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// The paper's CAD settings: 50,000 samples, 5,000 spheres, sharp
-  /// features preserved; no Euler-neutral spike collapses.
+  /// features preserved.
   void SetPresetToCAD();
   /// The paper's organic settings: 10,000 samples, 1,000 spheres, no
-  /// feature snapping; Euler-neutral spike collapses on.
+  /// feature snapping.
   void SetPresetToOrganic();
 
   ///@{
@@ -104,8 +104,8 @@ public:
   ///@{
   /// Let spike edges pass the link condition with collapses that keep the
   /// Euler characteristic (see vtkAtlasMedialAxisSimplifier): removes most
-  /// spike triangles of organic shapes. On in the organic preset (the
-  /// default), off in the CAD one.
+  /// spike triangles of organic shapes (default off: on coarse convex shapes
+  /// the merged balls can reach a few percent outside the surface).
   vtkSetMacro(EulerNeutralSpikeCollapses, bool);
   vtkGetMacro(EulerNeutralSpikeCollapses, bool);
   vtkBooleanMacro(EulerNeutralSpikeCollapses, bool);
@@ -168,7 +168,7 @@ protected:
   vtkIdType TargetNumberOfVertices = 1000;
   bool PreserveSharpFeatures = false;
   bool FringeCollapses = false;
-  bool EulerNeutralSpikeCollapses = true;
+  bool EulerNeutralSpikeCollapses = false;
   int Strategy = Structural;
   double FeatureAngle = 45.0;
   bool ConcaveFiltering = true;

@@ -582,21 +582,14 @@ AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const EdgeCollapseCounts counts = mesh.Run();
   AtlasSimplifierResult result;
-  result.QueueInitialisationSeconds = setupSeconds + counts.QueueInitialisationSeconds;
-  result.Aborted = counts.Aborted;
-  if (counts.Aborted)
+  static_cast<EdgeCollapseCounts&>(result) = counts;
+  result.QueueInitialisationSeconds += setupSeconds;
+  if (!counts.Aborted)
   {
-    return result;
+    result.Medial = policy.Output(mesh);
+    result.ForcedSnaps = policy.ForcedSnaps;
+    result.SnappedVertices = policy.Snapped;
   }
-  result.Medial = policy.Output(mesh);
-  result.ForcedSnaps = policy.ForcedSnaps;
-  result.Collapses = counts.Collapses;
-  result.RejectedCollapses = counts.RejectedCollapses;
-  result.RelaxedCollapses = counts.RelaxedCollapses;
-  result.FoldingAllowedCollapses = counts.FoldingAllowedCollapses;
-  result.MergedFaces = counts.MergedFaces;
-  result.EulerNeutralCollapses = counts.EulerNeutralCollapses;
-  result.SnappedVertices = policy.Snapped;
   return result;
 }
 } // namespace medialaxis

@@ -8,6 +8,7 @@
 #ifndef medialaxis_AtlasSimplifier_h
 #define medialaxis_AtlasSimplifier_h
 
+#include "EdgeCollapseCounts.h"
 #include "MedialMesh.h"
 #include "RestrictedVoronoi.h"
 
@@ -79,26 +80,15 @@ struct AtlasMedialMesh
   std::vector<std::uint8_t> FeatureVertex; // per vertex (output only)
 };
 
-struct AtlasSimplifierResult
+/// The collapse counts (see EdgeCollapseCounts; QueueInitialisationSeconds
+/// includes the set-up of the per-cell quadrics and Atlases) and the result.
+struct AtlasSimplifierResult : EdgeCollapseCounts
 {
   AtlasMedialMesh Medial;
-  std::size_t Collapses = 0;
-  std::size_t RejectedCollapses = 0; // would have broken validity or topology
-  std::size_t RelaxedCollapses = 0;  // made without the link condition (see options)
-  /// Made after every collapse that keeps triangles from folding onto each
-  /// other was exhausted (e.g. tubes whose sheets shrink to a curve).
-  std::size_t FoldingAllowedCollapses = 0;
-  std::size_t MergedFaces = 0; // faces merged away: each closes a tetrahedral bubble
-  /// Collapses past the link condition that keep the Euler characteristic.
-  std::size_t EulerNeutralCollapses = 0;
   std::size_t SnappedVertices = 0; // feature vertices moved onto sharp edges
   /// Feature vertices snapped although that made a zero-area or folded
   /// triangle; the collapses around them go first to repair it.
   std::size_t ForcedSnaps = 0;
-  /// Wall time of the set-up and the first evaluation of every edge (the
-  /// rest of the run is the collapsing itself).
-  double QueueInitialisationSeconds = 0.0;
-  bool Aborted = false;
 };
 
 /// `rvd`: the restricted Voronoi diagram whose sites the Atlases refer to

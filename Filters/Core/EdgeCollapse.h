@@ -6,6 +6,7 @@
 #define medialaxis_EdgeCollapse_h
 
 #include "CollapseQueue.h"
+#include "EdgeCollapseCounts.h"
 #include "MedialMesh.h"
 #include "Vec3.h"
 
@@ -57,22 +58,6 @@ struct EdgeCollapseOptions
   bool PreventFolds = true;
   /// Fraction in [0, 1]; returning false aborts.
   std::function<bool(double)> Progress;
-};
-
-struct EdgeCollapseCounts
-{
-  std::size_t Collapses = 0;
-  std::size_t RejectedCollapses = 0;
-  std::size_t RelaxedCollapses = 0;
-  std::size_t FoldingAllowedCollapses = 0;
-  std::size_t MergedFaces = 0; // each closed a bubble (lowered the Euler characteristic)
-  /// Collapses past the link condition that keep the Euler characteristic
-  /// (FringeCollapses, EulerNeutralSpikeCollapses) and the face pairs they
-  /// merged (not counted in MergedFaces).
-  std::size_t EulerNeutralCollapses = 0;
-  std::size_t EulerNeutralMerges = 0;
-  double QueueInitialisationSeconds = 0.0;
-  bool Aborted = false;
 };
 
 /// Per-thread scratch space handed to CollapsePolicy::Evaluate.

@@ -372,21 +372,14 @@ QMatSimplifierResult SimplifyMedialAxisQMat(
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const EdgeCollapseCounts counts = mesh.Run();
   QMatSimplifierResult result;
-  result.QueueInitialisationSeconds = setupSeconds + counts.QueueInitialisationSeconds;
-  result.Aborted = counts.Aborted;
+  static_cast<EdgeCollapseCounts&>(result) = counts;
+  result.QueueInitialisationSeconds += setupSeconds;
   result.FacesWithoutTangentPlanes = policy.FacesWithoutTangentPlanes;
   result.NestedCones = policy.NestedCones;
-  if (counts.Aborted)
+  if (!counts.Aborted)
   {
-    return result;
+    result.Medial = policy.Output(mesh);
   }
-  result.Medial = policy.Output(mesh);
-  result.Collapses = counts.Collapses;
-  result.RejectedCollapses = counts.RejectedCollapses;
-  result.RelaxedCollapses = counts.RelaxedCollapses;
-  result.FoldingAllowedCollapses = counts.FoldingAllowedCollapses;
-  result.MergedFaces = counts.MergedFaces;
-  result.EulerNeutralCollapses = counts.EulerNeutralCollapses;
   return result;
 }
 }

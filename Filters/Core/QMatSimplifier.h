@@ -52,25 +52,17 @@ struct QMatSimplifierOptions
   std::function<bool(double)> Progress;
 };
 
-struct QMatSimplifierResult
+/// The collapse counts (see EdgeCollapseCounts) and the result.
+struct QMatSimplifierResult : EdgeCollapseCounts
 {
   /// The simplified mesh; when the input had Atlases (AtlasOffsets of size
   /// vertices + 1), every vertex has the union of the Atlases merged into it.
   AtlasMedialMesh Medial;
-  std::size_t Collapses = 0;
-  std::size_t RejectedCollapses = 0;
-  std::size_t RelaxedCollapses = 0;
-  std::size_t FoldingAllowedCollapses = 0;
-  std::size_t MergedFaces = 0;
-  /// Collapses past the link condition that keep the Euler characteristic.
-  std::size_t EulerNeutralCollapses = 0;
   /// Input faces whose three balls have no common tangent planes (their
   /// edges' cone terms stand in for them) and input cones with one ball
   /// inside the other (no SQE term).
   std::size_t FacesWithoutTangentPlanes = 0;
   std::size_t NestedCones = 0;
-  double QueueInitialisationSeconds = 0.0;
-  bool Aborted = false;
 };
 
 /// Any medial mesh (ours or read from a .ma file). Single-threaded apart from

@@ -229,10 +229,7 @@ std::string PolyDataToMedialMesh(vtkPolyData* input, MedialMesh& mesh)
 void AddStabilityRatios(const MedialMesh& m, vtkPolyData* output)
 {
   auto ratio = [&m](vtkIdType a, vtkIdType b)
-  {
-    const double d = Norm(m.Centers[b] - m.Centers[a]);
-    return d > 0.0 ? std::max(0.0, d - std::fabs(m.Radii[a] - m.Radii[b])) / d : 0.0;
-  };
+  { return StabilityRatio(m.Centers[a], m.Radii[a], m.Centers[b], m.Radii[b]); };
   // In the cell order verts, lines, polys.
   vtkNew<vtkDoubleArray> stability;
   stability->SetName("StabilityRatio");

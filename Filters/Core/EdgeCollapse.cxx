@@ -80,13 +80,8 @@ MedialEdgeCollapse::MedialEdgeCollapse(const MedialMesh& input, const Normalisat
 
 double MedialEdgeCollapse::StabilityRatio(Index a, Index b) const
 {
-  const Sphere &p = this->Spheres[a], &q = this->Spheres[b];
-  const double d = Norm(Point3{ p[0] - q[0], p[1] - q[1], p[2] - q[2] });
-  if (!(d > 0.0))
-  {
-    return 0.0;
-  }
-  return std::max(0.0, d - std::fabs(p[3] - q[3])) / d;
+  return medialaxis::StabilityRatio(
+    this->Position(a), this->Spheres[a][3], this->Position(b), this->Spheres[b][3]);
 }
 
 std::size_t MedialEdgeCollapse::MergedRingSums(

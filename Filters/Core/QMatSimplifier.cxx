@@ -31,12 +31,6 @@ void AddCone(SphereQuadric& q, const ConePrimitive& cone)
   }
 }
 
-double StabilityRatio(const Point3& ca, double ra, const Point3& cb, double rb)
-{
-  const double d = Norm(cb - ca);
-  return d > 0.0 ? std::max(0.0, d - std::fabs(ra - rb)) / d : 0.0;
-}
-
 class QMatPolicy final : public CollapsePolicy
 {
 public:

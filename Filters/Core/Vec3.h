@@ -49,6 +49,15 @@ inline Point3 Normalized(const Point3& a)
 }
 
 /// Axis-aligned bounding box (lowest and highest corner) of non-empty points.
+/// Stability ratio of the medial edge between balls (ca, ra) and (cb, rb)
+/// (Q-MAT's Gamma): 0 for a pure spike (one ball internally tangent to the
+/// other, or coincident centres), 1 for equal radii.
+inline double StabilityRatio(const Point3& ca, double ra, const Point3& cb, double rb)
+{
+  const double d = Norm(cb - ca);
+  return d > 0.0 ? std::max(0.0, d - std::fabs(ra - rb)) / d : 0.0;
+}
+
 inline std::pair<Point3, Point3> BoundingBox(const std::vector<Point3>& points)
 {
   Point3 lo = points[0], hi = points[0];

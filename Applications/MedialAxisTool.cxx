@@ -66,6 +66,9 @@ Options:
   --target N            spheres left after simplification (overrides the preset)
   --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not
   --feature-angle DEG   dihedral tolerance for sharp edges (default 45)
+  --feature-filtering N iterations of bilateral normal filtering that must
+                        confirm every sharp convex edge, so that noise does
+                        not pass for ridges (default 3; 0 = raw normals only)
   --strategy structural|qmat
                         simplifier: structural (default, Structural MAT's
                         Atlas energy) or qmat (Q-MAT's slab quadric error on
@@ -115,6 +118,7 @@ struct Options
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
        Fillets = false, FringeCollapses = false, SpikeCollapses = false, QMat = false;
   double FeatureAngle = 45.0;
+  int FeatureNormalFiltering = 3;
   int Seed = 0, Threads = 0;
 };
 
@@ -200,6 +204,19 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
         return "--feature-angle must be between 0 and 180 degrees";
       }
       o.FeatureAngle = number;
+    }
+    else if (arg == "--feature-filtering")
+    {
+      if (!(problem = value(number)).empty())
+      {
+        return problem;
+      }
+      if (!(number >= 0.0 && number <= 100.0) ||
+        number != static_cast<double>(static_cast<int>(number)))
+      {
+        return "--feature-filtering must be a whole number from 0 to 100";
+      }
+      o.FeatureNormalFiltering = static_cast<int>(number);
     }
     else if (arg == "--seed" || arg == "--threads")
     {
@@ -473,6 +490,7 @@ int main(int argc, char** argv)
     structural->SetPreserveSharpFeatures(o.Sharp == 1);
   }
   structural->SetFeatureAngle(o.FeatureAngle);
+  structural->SetFeatureNormalFiltering(o.FeatureNormalFiltering);
   structural->SetFringeCollapses(o.FringeCollapses);
   structural->SetEulerNeutralSpikeCollapses(o.SpikeCollapses);
   structural->SetStrategy(
@@ -629,6 +647,7 @@ int main(int argc, char** argv)
          << ", \"preserve_sharp_features\": "
          << (structural->GetPreserveSharpFeatures() ? "true" : "false")
          << ", \"feature_angle\": " << o.FeatureAngle
+         << ", \"feature_normal_filtering\": " << o.FeatureNormalFiltering
          << ", \"fringe_collapses\": " << (o.FringeCollapses ? "true" : "false")
          << ", \"euler_neutral_spike_collapses\": "
          << (structural->GetEulerNeutralSpikeCollapses() ? "true" : "false")

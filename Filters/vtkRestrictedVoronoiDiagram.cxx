@@ -72,6 +72,7 @@ int vtkRestrictedVoronoiDiagram::RequestData(
 
   medialaxis::RestrictedVoronoiOptions options;
   options.FeatureAngle = vtkMath::RadiansFromDegrees(this->FeatureAngle);
+  options.FeatureNormalFiltering = this->FeatureNormalFiltering;
   options.Progress = [this](double f)
   {
     this->UpdateProgress(0.05 + 0.85 * f);
@@ -181,5 +182,6 @@ void vtkRestrictedVoronoiDiagram::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "FeatureNormalFiltering: " << this->FeatureNormalFiltering << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

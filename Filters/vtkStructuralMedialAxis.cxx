@@ -266,6 +266,7 @@ int vtkStructuralMedialAxis::RequestData(
   rvd->SetInputData(0, surface);
   rvd->SetInputConnection(1, sampler->GetOutputPort());
   rvd->SetFeatureAngle(this->FeatureAngle);
+  rvd->SetFeatureNormalFiltering(this->FeatureNormalFiltering);
   rvd->SetNumberOfThreads(this->NumberOfThreads);
   vtkNew<vtkVoronoiMedialAxis> voronoi;
   voronoi->SetInputData(0, surface);
@@ -401,6 +402,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
   os << indent << "Strategy: " << (this->Strategy == QMat ? "QMat" : "Structural") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "FeatureNormalFiltering: " << this->FeatureNormalFiltering << "\n";
   os << indent << "ConcaveFiltering: " << this->ConcaveFiltering << "\n";
   os << indent << "Lambda: " << this->Lambda << "\n";
   os << indent << "SpikeThreshold: " << this->SpikeThreshold << "\n";

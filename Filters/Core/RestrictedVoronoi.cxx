@@ -2,6 +2,7 @@
 #include "RestrictedVoronoi.h"
 
 #include "DisjointSets.h"
+#include "FeatureNormals.h"
 #include "KdTree.h"
 #include "TriangleAdjacency.h"
 #include "Vec3.h"
@@ -364,7 +365,13 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
   }
 
   // Feature flags and connected pieces of every cell.
-  const TriangleAdjacency adjacency = ComputeTriangleAdjacency(surface, options.FeatureAngle);
+  std::vector<Point3> filteredNormals;
+  if (options.FeatureNormalFiltering > 0)
+  {
+    filteredNormals = BilateralFaceNormals(surface, options.FeatureNormalFiltering);
+  }
+  const TriangleAdjacency adjacency = ComputeTriangleAdjacency(
+    surface, options.FeatureAngle, filteredNormals.empty() ? nullptr : &filteredNormals);
   std::vector<Index> firstPolygon(nt + 1, 0);
   for (Index t : rvd.PolygonTriangle)
   {

@@ -17,6 +17,10 @@ struct RestrictedVoronoiOptions
 {
   /// Tolerance phi of the sharp-feature test, in radians (default 45°).
   double FeatureAngle = 0.785398163397448309616;
+  /// Iterations of bilateral normal filtering (BilateralFaceNormals) whose
+  /// normals must confirm every sharp convex edge; 0 tests the raw normals
+  /// alone. On noisy surfaces (scans) raw normals take the noise for ridges.
+  int FeatureNormalFiltering = 3;
   /// Called with a fraction in [0, 1] from the calling thread; returning
   /// false aborts the computation (the result is then empty).
   std::function<bool(double)> Progress;

@@ -30,7 +30,8 @@ Point3 TriangleNormal(const TriangleMesh& mesh, Index t)
   return Normalized(Cross(mesh.Points[tri[1]] - a, mesh.Points[tri[2]] - a));
 }
 
-TriangleAdjacency ComputeTriangleAdjacency(const TriangleMesh& mesh, double featureAngle)
+TriangleAdjacency ComputeTriangleAdjacency(
+  const TriangleMesh& mesh, double featureAngle, const std::vector<Point3>* filteredNormals)
 {
   const std::size_t nt = mesh.Triangles.size();
   TriangleAdjacency adjacency;
@@ -73,8 +74,13 @@ TriangleAdjacency ComputeTriangleAdjacency(const TriangleMesh& mesh, double feat
       {
         const Point3& onEdge = mesh.Points[halfEdges[i].Lo];
         const Point3& opposite = mesh.Points[mesh.Triangles[t2][(k2 + 2) % 3]];
-        const EdgeFeature f =
+        EdgeFeature f =
           Dot(n1, opposite - onEdge) < 0.0 ? EdgeFeature::Convex : EdgeFeature::Concave;
+        if (f == EdgeFeature::Convex && filteredNormals &&
+          Dot((*filteredNormals)[t1], (*filteredNormals)[t2]) >= cosFeature)
+        {
+          f = EdgeFeature::None;
+        }
         adjacency.Feature[t1][k1] = f;
         adjacency.Feature[t2][k2] = f;
       }

@@ -48,7 +48,6 @@ inline Point3 Normalized(const Point3& a)
   return n > 0.0 ? (1.0 / n) * a : Point3{ 0.0, 0.0, 0.0 };
 }
 
-/// Axis-aligned bounding box (lowest and highest corner) of non-empty points.
 /// Stability ratio of the medial edge between balls (ca, ra) and (cb, rb)
 /// (Q-MAT's Gamma): 0 for a pure spike (one ball internally tangent to the
 /// other, or coincident centres), 1 for equal radii.
@@ -58,6 +57,7 @@ inline double StabilityRatio(const Point3& ca, double ra, const Point3& cb, doub
   return d > 0.0 ? std::max(0.0, d - std::fabs(ra - rb)) / d : 0.0;
 }
 
+/// Axis-aligned bounding box (lowest and highest corner) of non-empty points.
 inline std::pair<Point3, Point3> BoundingBox(const std::vector<Point3>& points)
 {
   Point3 lo = points[0], hi = points[0];

@@ -57,6 +57,9 @@ class CommandLineTest(unittest.TestCase):
         self.assertEqual(result.returncode, 2)
         self.assertIn("--samples needs a number", result.stderr)
         self.assertEqual(run("--preset", "blob", "a", "b").returncode, 2)
+        result = run("--feature-filtering", "1.5", "a", "b")
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("--feature-filtering must be a whole number from 0 to 100", result.stderr)
 
     def test_qmat_strategy(self):
         sphere = self.write_sphere("sphere.vtp")
@@ -165,6 +168,7 @@ class CommandLineTest(unittest.TestCase):
         with open(report) as f:
             data = json.load(f)
         self.assertEqual(data["parameters"]["samples"], 3000)
+        self.assertEqual(data["parameters"]["feature_normal_filtering"], 3)
         self.assertEqual(data["counts"]["sites"], 3000)
         self.assertEqual(data["counts"]["vertices"], 50)
         self.assertEqual(data["triangle_quality"]["degenerate"], 0)

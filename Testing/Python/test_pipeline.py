@@ -116,6 +116,7 @@ class PipelineTest(unittest.TestCase):
         rvd.SetInputConnection(0, shape.GetOutputPort())
         rvd.SetInputConnection(1, sampler.GetOutputPort())
         rvd.SetFeatureAngle(30.0)
+        self.assertEqual(rvd.GetFeatureNormalFiltering(), 3)
         rvd.Update()
         sites = rvd.GetOutputDataObject(1)
         self.assertEqual(sites.GetNumberOfPoints(), 1500)

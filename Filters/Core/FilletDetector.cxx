@@ -114,18 +114,84 @@ enum class EdgeVerdict : std::uint8_t
 // tolerance of points near it.
 struct EnvelopePiece
 {
-  ConePrimitive Cone; // a ball when both ends coincide
-  Point3 Lo, Hi;      // bounding box, grown by the tolerance
+  ConePrimitive Cone;     // a ball when both ends coincide
+  Point3 Lo, Hi;          // bounding box, grown by the tolerance
+  bool Extension = false; // extrapolated past an end of the line
 };
+
+// Where an open centre line ends and heads: its centres and radii near one
+// end fitted by least squares against arc length, over about three radii
+// (at least three vertices), because the last medial edges zig-zag and the
+// circle fits at the very end see less of the fillet.
+struct LineEnd
+{
+  bool Valid = false;
+  Point3 Centre;    // the fitted line at the end
+  double Radius;    // the fitted radius there
+  Point3 Direction; // unit, outwards
+  double Slope;     // change of radius per length outwards, within +-0.45
+};
+
+LineEnd FitLineEnd(const std::vector<Point3>& centres, const std::vector<double>& radii, bool back)
+{
+  const std::size_t n = centres.size();
+  auto vertex = [&](std::size_t k) { return back ? n - 1 - k : k; };
+  const double endRadius = radii[vertex(0)];
+  std::vector<double> arc{ 0.0 };
+  while (arc.size() < n && (arc.size() < 3 || arc.back() <= 3.0 * endRadius))
+  {
+    const std::size_t k = arc.size();
+    arc.push_back(arc.back() + Norm(centres[vertex(k)] - centres[vertex(k - 1)]));
+  }
+  const double count = static_cast<double>(arc.size());
+  double sMean = 0.0, rMean = 0.0;
+  Point3 cMean{ 0.0, 0.0, 0.0 };
+  for (std::size_t k = 0; k < arc.size(); ++k)
+  {
+    sMean += arc[k] / count;
+    rMean += radii[vertex(k)] / count;
+    cMean = cMean + (1.0 / count) * centres[vertex(k)];
+  }
+  double sVariance = 0.0, rCovariance = 0.0;
+  Point3 cCovariance{ 0.0, 0.0, 0.0 };
+  for (std::size_t k = 0; k < arc.size(); ++k)
+  {
+    const double ds = arc[k] - sMean;
+    sVariance += ds * ds;
+    rCovariance += ds * (radii[vertex(k)] - rMean);
+    cCovariance = cCovariance + ds * (centres[vertex(k)] - cMean);
+  }
+  LineEnd end;
+  if (!(sVariance > 0.0))
+  {
+    return end;
+  }
+  const Point3 inwards = (1.0 / sVariance) * cCovariance; // d centre / d arc
+  const double speed = Norm(inwards);
+  if (!(speed > 0.0))
+  {
+    return end;
+  }
+  end.Valid = true;
+  end.Centre = cMean - sMean * inwards;
+  end.Radius =
+    std::clamp(rMean - sMean * rCovariance / sVariance, 0.5 * endRadius, 1.5 * endRadius);
+  end.Direction = (-1.0 / speed) * inwards;
+  end.Slope = std::clamp(-rCovariance / sVariance / speed, -0.45, 0.45);
+  return end;
+}
 
 class CentreLineEnvelope
 {
 public:
-  /// `reach` bounds the tolerances Matches will be asked for.
+  /// `reach` bounds the tolerances Matches will be asked for. Past the
+  /// ends of an open line the envelope is extrapolated, not fitted to the
+  /// surface: points there match within at least `extensionTolerance`.
   CentreLineEnvelope(const std::vector<Point3>& centres, const std::vector<double>& radii,
-    bool closed, double reach, double cosNormal)
+    bool closed, double reach, double cosNormal, double extensionTolerance)
     : Reach(reach)
     , CosNormal(cosNormal)
+    , ExtensionTolerance(extensionTolerance)
   {
     const std::size_t n = centres.size();
     const std::size_t segments = closed ? n : n - 1;
@@ -142,22 +208,16 @@ public:
       // surface with the normals of the envelope.
       for (int end = 0; end < 2; ++end)
       {
-        // Heading over about one radius: the last medial edges may zig-zag.
-        const std::size_t last = end ? n - 1 : 0;
-        std::size_t previous = end ? n - 2 : 1;
-        while (Norm(centres[last] - centres[previous]) < radii[last] &&
-          (end ? previous > 0 : previous + 1 < n))
+        const LineEnd fit = FitLineEnd(centres, radii, end == 1);
+        if (!fit.Valid)
         {
-          previous = end ? previous - 1 : previous + 1;
+          continue;
         }
-        const double length = Norm(centres[last] - centres[previous]);
-        const Point3 direction = Normalized(centres[last] - centres[previous]);
-        // The radius keeps changing as it did (variable-radius fillets).
-        const double slope =
-          length > 0.0 ? std::clamp((radii[last] - radii[previous]) / length, -0.45, 0.45) : 0.0;
-        const double reach = 2.0 * radii[last];
-        this->Add(centres[last], radii[last], centres[last] + reach * direction,
-          radii[last] * (1.0 + 2.0 * slope));
+        const std::size_t last = end ? n - 1 : 0;
+        const double reach = 2.0 * fit.Radius;
+        this->Add(centres[last], radii[last], fit.Centre, fit.Radius, true);
+        this->Add(fit.Centre, fit.Radius, fit.Centre + reach * fit.Direction,
+          fit.Radius * (1.0 + 2.0 * fit.Slope), true);
       }
     }
   }
@@ -178,7 +238,11 @@ public:
         cone.Length > 0.0 ? std::clamp(Dot(p - cone.C[0], cone.Axis) / cone.Length, 0.0, 1.0) : 0.0;
       const double radius = (1.0 - t) * cone.R[0] + t * cone.R[1];
       const PrimitiveDistance d = ConeDistance(cone, p);
-      if (std::abs(d.Distance) <= tolerance * radius && Dot(d.Normal, normal) >= this->CosNormal)
+      // Past the end, the extrapolation is less certain the farther it goes.
+      const double tol = piece.Extension && this->ExtensionTolerance > tolerance ? tolerance +
+          (this->ExtensionTolerance - tolerance) * std::min(1.0, t * cone.Length / radius)
+                                                                                 : tolerance;
+      if (std::abs(d.Distance) <= tol * radius && Dot(d.Normal, normal) >= this->CosNormal)
       {
         return true;
       }
@@ -187,9 +251,10 @@ public:
   }
 
 private:
-  void Add(const Point3& c0, double r0, const Point3& c1, double r1)
+  void Add(const Point3& c0, double r0, const Point3& c1, double r1, bool extension = false)
   {
     EnvelopePiece piece;
+    piece.Extension = extension;
     piece.Cone = MakeCone(c0, r0, c1, r1);
     const double reach = std::max(r0, r1) * (1.0 + this->Reach);
     for (int k = 0; k < 3; ++k)
@@ -203,6 +268,7 @@ private:
   std::vector<EnvelopePiece> Pieces;
   double Reach;
   double CosNormal;
+  double ExtensionTolerance;
 };
 
 // Moves each centre-line vertex to the centre of the circle fitted to the
@@ -556,6 +622,51 @@ EdgeVerdict JudgeEdge(Index a, Index b, const MedialMesh& medial,
                                                           : EdgeVerdict::Rejected;
 }
 
+// The last medial edges of an open line may turn back on it (the ends of
+// medial sheets zig-zag); such an end vertex is no further along the line.
+void TrimFoldedEnds(Fillet& chain)
+{
+  if (chain.Closed)
+  {
+    return;
+  }
+  auto folds = [&chain](std::size_t a, std::size_t b, std::size_t c)
+  { return Dot(chain.Centres[c] - chain.Centres[b], chain.Centres[b] - chain.Centres[a]) < 0.0; };
+  while (chain.Vertices.size() >= 3 &&
+    folds(chain.Vertices.size() - 3, chain.Vertices.size() - 2, chain.Vertices.size() - 1))
+  {
+    chain.Vertices.pop_back();
+    chain.Centres.pop_back();
+    chain.Radii.pop_back();
+  }
+  while (chain.Vertices.size() >= 3 && folds(2, 1, 0))
+  {
+    chain.Vertices.erase(chain.Vertices.begin());
+    chain.Centres.erase(chain.Centres.begin());
+    chain.Radii.erase(chain.Radii.begin());
+  }
+}
+
+// Whether the point nearest to p on an open polyline is one of its ends.
+bool PastAnEnd(const std::vector<Point3>& line, const Point3& p)
+{
+  double best = std::numeric_limits<double>::infinity();
+  bool atEnd = false;
+  for (std::size_t i = 0; i + 1 < line.size(); ++i)
+  {
+    const Point3 ab = line[i + 1] - line[i];
+    const double length2 = Dot(ab, ab);
+    const double u = length2 > 0.0 ? Dot(p - line[i], ab) / length2 : 0.0;
+    const double d = Distance2(p, line[i] + std::clamp(u, 0.0, 1.0) * ab);
+    if (d < best)
+    {
+      best = d;
+      atEnd = (i == 0 && u < 0.0) || (i + 2 == line.size() && u > 1.0);
+    }
+  }
+  return atEnd;
+}
+
 void Measure(Fillet& chain)
 {
   const std::size_t n = chain.Centres.size();
@@ -752,6 +863,7 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
     return region;
   };
   const double reach = std::max(options.RadiusTolerance, options.FaceTolerance);
+  std::vector<double> areaAlongLine(result.Fillets.size(), 0.0);
   for (std::size_t f = 0; f < result.Fillets.size(); ++f)
   {
     Fillet& fillet = result.Fillets[f];
@@ -759,7 +871,8 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
     AtlasTriangles(fillet.Vertices.data(), fillet.Vertices.data() + fillet.Vertices.size(),
       atlasOffsets, atlasSites, siteTriangles, seeds);
 
-    const CentreLineEnvelope loose(fillet.Centres, fillet.Radii, fillet.Closed, reach, cosNormal);
+    const CentreLineEnvelope loose(
+      fillet.Centres, fillet.Radii, fillet.Closed, reach, cosNormal, options.RadiusTolerance);
     const std::vector<Index> found = grow(seeds,
       [&](Index t)
       {
@@ -785,9 +898,11 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
     }
     RefineCentreLine(fillet, corners, 0.25 * options.FaceTolerance, false);
     RefineCentreLine(fillet, corners, 0.25 * options.FaceTolerance, true);
+    TrimFoldedEnds(fillet);
     Measure(fillet);
 
-    const CentreLineEnvelope tight(fillet.Centres, fillet.Radii, fillet.Closed, reach, cosNormal);
+    const CentreLineEnvelope tight(
+      fillet.Centres, fillet.Radii, fillet.Closed, reach, cosNormal, options.RadiusTolerance);
     seeds.insert(seeds.end(), found.begin(), found.end());
     for (Index t : grow(seeds,
            [&](Index t)
@@ -803,18 +918,23 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
       result.TriangleFillet[t] = static_cast<int>(f);
       ++fillet.SurfaceTriangles;
       fillet.SurfaceArea += triangles[t].Area;
+      if (fillet.Closed || !PastAnEnd(fillet.Centres, triangles[t].Centroid))
+      {
+        areaAlongLine[f] += triangles[t].Area;
+      }
     }
   }
   // 4. A rolling ball leaves faces about as wide as its arc along the whole
   // line; a line with much less (a sheet boundary near some curved face) is
-  // no fillet.
+  // no fillet. Only the faces along the line count: a short line must not
+  // pass on the faces found past its ends alone.
   std::vector<int> renumber(result.Fillets.size(), -1);
   std::vector<Fillet> kept;
   for (std::size_t f = 0; f < result.Fillets.size(); ++f)
   {
     const Fillet& fillet = result.Fillets[f];
     const double expected = fillet.Length * fillet.MeanRadius * options.MinimumArcAngle;
-    if (fillet.MinimumRadius > 0.0 && fillet.SurfaceArea >= 0.5 * expected)
+    if (fillet.MinimumRadius > 0.0 && areaAlongLine[f] >= 0.5 * expected)
     {
       renumber[f] = static_cast<int>(kept.size());
       kept.push_back(fillet);

@@ -13,7 +13,10 @@
 // surface from its Atlas triangles, through triangles whose corners all lie
 // on the polyline's envelope. The polyline is then refined, vertex by vertex,
 // by a circle fit to the fillet's cross-section, and the faces grown again
-// with a tighter tolerance.
+// with a tighter tolerance. Past the open ends of a line, where the ball
+// reaches a cap the medial line stops short of, the faces are grown along
+// the line extrapolated (least-squares trend of its last radii), with a
+// tolerance that loosens with the distance past the end.
 #ifndef medialaxis_FilletDetector_h
 #define medialaxis_FilletDetector_h
 

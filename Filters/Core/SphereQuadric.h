@@ -12,7 +12,11 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
 
 namespace medialaxis
 {
@@ -95,28 +99,91 @@ struct alignas(64) SphereQuadric
 
 /// Solves the top-left N x N block of the quadric's system A x = B (the
 /// minimiser over the first N coordinates). A is a sum of outer products:
-/// symmetric positive semi-definite, so LDL^T, refusing nearly singular
-/// systems (false).
+/// symmetric positive semi-definite, so LDL^T with symmetric pivoting on the
+/// largest remaining diagonal entry, refusing nearly singular systems
+/// (false). Written out for a fixed N <= 4 because Eigen's LDLT runs on
+/// dynamic-size blocks internally, which made these tiny solves a sixth of
+/// the simplifiers' time.
 template <int N>
 bool SolveQuadric(const SphereQuadric& q, Eigen::Matrix<double, N, 1>& x)
 {
-  Eigen::Matrix<double, N, N> A;
-  Eigen::Matrix<double, N, 1> B;
+  static_assert(N >= 1 && N <= 4, "a sphere has four coordinates");
+  // Full symmetric copy, eliminated in place in pivot order: order[k] is the
+  // k-th pivot's coordinate; below the diagonal (in that order) L, on it D.
+  double a[N][N];
+  double b[N];
+  int order[N];
   for (int i = 0; i < N; ++i)
   {
     for (int j = 0; j < N; ++j)
     {
-      A(i, j) = q.A(i, j);
+      a[i][j] = q.A(i, j);
     }
-    B[i] = q.B(i);
+    b[i] = q.B(i);
+    order[i] = i;
   }
-  const Eigen::LDLT<Eigen::Matrix<double, N, N>> ldlt(A);
-  const Eigen::Matrix<double, N, 1> pivots = ldlt.vectorD().cwiseAbs();
-  if (ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff()))
+  double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < N; ++k)
+  {
+    int pivot = k; // the largest remaining diagonal entry
+    for (int i = k + 1; i < N; ++i)
+    {
+      if (std::abs(a[order[i]][order[i]]) > std::abs(a[order[pivot]][order[pivot]]))
+      {
+        pivot = i;
+      }
+    }
+    std::swap(order[k], order[pivot]);
+    const int pk = order[k];
+    const double d = a[pk][pk];
+    largest = std::max(largest, std::abs(d));
+    smallest = std::min(smallest, std::abs(d));
+    if (d == 0.0)
+    {
+      return false;
+    }
+    for (int i = k + 1; i < N; ++i)
+    {
+      const int pi = order[i];
+      const double l = a[pi][pk] / d;
+      for (int j = k + 1; j <= i; ++j)
+      {
+        const int pj = order[j];
+        a[pi][pj] -= l * a[pj][pk];
+        a[pj][pi] = a[pi][pj];
+      }
+    }
+    for (int i = k + 1; i < N; ++i)
+    {
+      a[order[i]][pk] /= d;
+    }
+  }
+  if (!(smallest > 1e-12 * largest))
   {
     return false;
   }
-  x = ldlt.solve(B);
+  // L z = b, D w = z, L^T u = w, in pivot order.
+  double u[N];
+  for (int i = 0; i < N; ++i)
+  {
+    u[i] = b[order[i]];
+    for (int j = 0; j < i; ++j)
+    {
+      u[i] -= a[order[i]][order[j]] * u[j];
+    }
+  }
+  for (int i = 0; i < N; ++i)
+  {
+    u[i] /= a[order[i]][order[i]];
+  }
+  for (int i = N - 1; i >= 0; --i)
+  {
+    for (int j = i + 1; j < N; ++j)
+    {
+      u[i] -= a[order[j]][order[i]] * u[j];
+    }
+    x[order[i]] = u[i];
+  }
   return x.allFinite();
 }
 }

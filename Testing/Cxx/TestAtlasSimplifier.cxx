@@ -6,7 +6,9 @@
 #include "BlueNoiseSampler.h"
 #include "MedialMeshQuality.h"
 #include "Parallel.h"
+#include "Random.h"
 #include "RestrictedVoronoi.h"
+#include "SphereQuadric.h"
 #include "Vec3.h"
 #include "VoronoiMedialAxis.h"
 #include "vtkAnalyticShapeSource.h"
@@ -502,4 +504,77 @@ TEST(AtlasMedialAxisSimplifierFilter, PreventFoldsAblation)
             << "the fold test, " << folded[1] << " with it\n";
   EXPECT_GT(folded[0], 0u);
   EXPECT_EQ(folded[1], 0u);
+}
+
+namespace
+{
+// The solve as it was done with Eigen's LDLT, as the reference.
+template <int N>
+bool ReferenceSolve(const SphereQuadric& q, Eigen::Matrix<double, N, 1>& x)
+{
+  Eigen::Matrix<double, N, N> A;
+  Eigen::Matrix<double, N, 1> B;
+  for (int i = 0; i < N; ++i)
+  {
+    for (int j = 0; j < N; ++j)
+    {
+      A(i, j) = q.A(i, j);
+    }
+    B[i] = q.B(i);
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, N, N>> ldlt(A);
+  const Eigen::Matrix<double, N, 1> pivots = ldlt.vectorD().cwiseAbs();
+  if (ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * pivots.maxCoeff()))
+  {
+    return false;
+  }
+  x = ldlt.solve(B);
+  return x.allFinite();
+}
+
+template <int N>
+void CompareWithReference(int facets, bool expectSolvable)
+{
+  Random random(1000 * N + facets);
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    SphereQuadric q;
+    for (int f = 0; f < facets; ++f)
+    {
+      const Point3 n =
+        Normalized({ random.Uniform() - 0.5, random.Uniform() - 0.5, random.Uniform() - 0.5 });
+      q.AddFacet(n, random.Uniform() - 0.5, 0.01 + random.Uniform());
+    }
+    Eigen::Matrix<double, N, 1> x, reference;
+    const bool solved = SolveQuadric<N>(q, x);
+    ASSERT_EQ(solved, ReferenceSolve<N>(q, reference)) << N << " " << facets << " " << trial;
+    ASSERT_EQ(solved, expectSolvable) << N << " " << facets << " " << trial;
+    if (solved)
+    {
+      // The same minimiser: the gradient A x - B vanishes.
+      for (int i = 0; i < N; ++i)
+      {
+        double residual = -q.B(i);
+        for (int j = 0; j < N; ++j)
+        {
+          residual += q.A(i, j) * x[j];
+        }
+        EXPECT_NEAR(residual, 0.0, 1e-9);
+        EXPECT_NEAR(x[i], reference[i], 1e-8 * (1.0 + std::abs(reference[i])));
+      }
+    }
+  }
+}
+}
+
+// The hand-written fixed-size LDL^T gives Eigen's LDLT minimiser on
+// well-posed quadrics and refuses the same rank-deficient ones.
+TEST(SphereQuadric, SolveMatchesEigenLdlt)
+{
+  CompareWithReference<4>(8, true);
+  CompareWithReference<4>(3, false); // 3 planes fix no sphere: rank 3 < 4
+  CompareWithReference<3>(8, true);
+  CompareWithReference<3>(2, false);
+  CompareWithReference<2>(4, true);
+  CompareWithReference<1>(1, true);
 }

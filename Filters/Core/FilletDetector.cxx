@@ -271,6 +271,41 @@ private:
   double ExtensionTolerance;
 };
 
+// The point of a polyline nearest to p (closed: the last vertex joins the
+// first): on segment Segment (vertex Segment to the next), at Along in
+// [0, 1] (Unclamped before clamping), the first such in case of ties.
+struct PolylineFoot
+{
+  std::size_t Segment = 0;
+  double Along = 0.0, Unclamped = 0.0;
+  Point3 Foot;
+};
+
+PolylineFoot NearestOnPolyline(const std::vector<Point3>& line, bool closed, const Point3& p)
+{
+  const std::size_t n = line.size();
+  const std::size_t segments = closed ? n : (n > 0 ? n - 1 : 0);
+  PolylineFoot nearest;
+  nearest.Foot = n > 0 ? line[0] : p;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < segments; ++i)
+  {
+    const Point3 &a = line[i], &b = line[(i + 1) % n];
+    const Point3 ab = b - a;
+    const double length2 = Dot(ab, ab);
+    const double u = length2 > 0.0 ? Dot(p - a, ab) / length2 : 0.0;
+    const double along = std::clamp(u, 0.0, 1.0);
+    const Point3 q = a + along * ab;
+    const double d = Norm(p - q);
+    if (d < best)
+    {
+      best = d;
+      nearest = { i, along, u, q };
+    }
+  }
+  return nearest;
+}
+
 // Moves each centre-line vertex to the centre of the circle fitted to the
 // fillet's cross-section there (the surface points nearest to it, projected
 // on the plane across the line), and takes that circle's radius.
@@ -281,33 +316,17 @@ void RefineCentreLine(
   Fillet& fillet, const std::vector<Point3>& points, double inlier, bool fromLine)
 {
   const std::size_t n = fillet.Centres.size();
-  const std::size_t segments = fillet.Closed ? n : n - 1;
   std::vector<Point3> centres = fillet.Centres;
   std::vector<std::uint8_t> fitted(n, 0);
   // Each point goes to the vertex nearest to its closest point on the line.
   std::vector<std::vector<Point3>> nearest(n);
   for (const Point3& p : points)
   {
-    std::size_t bestVertex = 0;
-    Point3 foot = centres[0];
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < segments; ++i)
-    {
-      const Point3 &a = centres[i], &b = centres[(i + 1) % n];
-      const Point3 ab = b - a;
-      const double length2 = Dot(ab, ab);
-      const double u = length2 > 0.0 ? std::clamp(Dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-      const Point3 q = a + u * ab;
-      const double d = Norm(p - q);
-      if (d < best)
-      {
-        best = d;
-        foot = q;
-        bestVertex = u < 0.5 ? i : (i + 1) % n;
-      }
-    }
+    const PolylineFoot nearestPoint = NearestOnPolyline(centres, fillet.Closed, p);
+    const std::size_t bestVertex =
+      nearestPoint.Along < 0.5 ? nearestPoint.Segment : (nearestPoint.Segment + 1) % n;
     // Stored relative to the vertex, or to the foot moved to the vertex.
-    nearest[bestVertex].push_back(fromLine ? centres[bestVertex] + (p - foot) : p);
+    nearest[bestVertex].push_back(fromLine ? centres[bestVertex] + (p - nearestPoint.Foot) : p);
   }
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -650,21 +669,9 @@ void TrimFoldedEnds(Fillet& chain)
 // Whether the point nearest to p on an open polyline is one of its ends.
 bool PastAnEnd(const std::vector<Point3>& line, const Point3& p)
 {
-  double best = std::numeric_limits<double>::infinity();
-  bool atEnd = false;
-  for (std::size_t i = 0; i + 1 < line.size(); ++i)
-  {
-    const Point3 ab = line[i + 1] - line[i];
-    const double length2 = Dot(ab, ab);
-    const double u = length2 > 0.0 ? Dot(p - line[i], ab) / length2 : 0.0;
-    const double d = Distance2(p, line[i] + std::clamp(u, 0.0, 1.0) * ab);
-    if (d < best)
-    {
-      best = d;
-      atEnd = (i == 0 && u < 0.0) || (i + 2 == line.size() && u > 1.0);
-    }
-  }
-  return atEnd;
+  const PolylineFoot nearest = NearestOnPolyline(line, false, p);
+  return (nearest.Segment == 0 && nearest.Unclamped < 0.0) ||
+    (nearest.Segment + 2 == line.size() && nearest.Unclamped > 1.0);
 }
 
 void Measure(Fillet& chain)

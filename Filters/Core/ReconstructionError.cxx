@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace medialaxis
@@ -132,6 +133,16 @@ bool ForEachChunked(
 // acceptance test.
 constexpr int Bands = 16, Sectors = 32, Split = 4; // coarse cells, each split 4 x 4
 constexpr double TwoPi = 2.0 * Pi;
+
+// Seconds since `start`, restarting it.
+double Lap(std::chrono::steady_clock::time_point& start)
+{
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - start).count();
+  start = now;
+  return seconds;
+}
+
 // Burial tests of pieces only cull: past this many primitives evaluated in
 // the tree, a piece is kept (its candidates get the exact test), which costs
 // less than proving an exposed piece unburied.
@@ -629,6 +640,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   }
   const auto box = BoundingBox(surface.Points);
   result.Diagonal = Norm(box.second - box.first);
+  auto clock = std::chrono::steady_clock::now();
 
   // Surface -> envelope, at the vertices (normals: area-weighted) and samples.
   const std::size_t nv = surface.Points.size();
@@ -664,7 +676,9 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   // can be exposed, see EnvelopePieces), area-uniform, kept when on the
   // boundary of the union; drawn in batches until enough are kept.
   // Candidate k depends only on (seed, k).
+  result.SurfaceSeconds = Lap(clock);
   const PieceSet pieces = EnvelopePieces(envelope);
+  result.PiecesSeconds = Lap(clock);
   const std::size_t target = pieces.Pieces.empty() ? 0 : options.NumberOfEnvelopeSamples;
   const std::size_t limit = 1000 * target;
   const std::uint64_t envelopeSeed = options.RandomSeed ^ 0x5DEECE66Dull;
@@ -732,6 +746,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
       return result;
     }
   }
+  result.CandidatesSeconds = Lap(clock);
   const TriangleLocator locator(surface);
   result.EnvelopeSampleDistance.resize(result.EnvelopeSamples.size());
   if (!ForEachChunked(result.EnvelopeSamples.size(), 0.8, 0.2, options.Progress,
@@ -743,6 +758,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   }
   Summarise(result.EnvelopeSampleDistance, 0, result.EnvelopeToSurface);
   result.EnvelopeToSurface.HausdorffLowerBound = result.EnvelopeToSurface.Hausdorff;
+  result.EnvelopeSeconds = Lap(clock);
 
   // Inside points whose distance to the union's boundary is not certified
   // exact carry an upper bound from projections and ray traces, which can be
@@ -766,6 +782,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
         }
       });
   }
+  result.TighteningSeconds = Lap(clock);
   result.VertexDistance.resize(nv);
   result.VertexLowerBound.resize(nv);
   result.VertexSignedDistance.resize(nv);

@@ -65,6 +65,12 @@ struct ReconstructionErrorResult
   std::vector<PrimitiveRef> EnvelopeSamplePrimitive;
   std::size_t EnvelopeCandidates = 0; // primitive-surface points drawn (accepted or not)
 
+  // Wall-clock seconds of each part, for benchmarks: surface -> envelope,
+  // exposed pieces of the primitives, drawing and testing envelope
+  // candidates, envelope -> surface, tightening inside bounds.
+  double SurfaceSeconds = 0.0, PiecesSeconds = 0.0, CandidatesSeconds = 0.0, EnvelopeSeconds = 0.0,
+         TighteningSeconds = 0.0;
+
   bool Aborted = false;
 };
 

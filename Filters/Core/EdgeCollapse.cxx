@@ -46,6 +46,29 @@ MedialEdgeCollapse::MedialEdgeCollapse(const MedialMesh& input, const Normalisat
   }
   this->VertexNeighbours.assign(nv, {});
   this->VertexFaces.assign(nv, {});
+  {
+    // Sized first: a few hundred thousand lists grown one push at a time
+    // cost more in reallocations than the rest of the set-up.
+    std::vector<std::uint32_t> links(nv, 0), faces(nv, 0);
+    for (const auto& e : input.Edges)
+    {
+      ++links[e[0]];
+      ++links[e[1]];
+    }
+    for (const auto& t : input.Faces)
+    {
+      for (Index v : t)
+      {
+        links[v] += 2;
+        ++faces[v];
+      }
+    }
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      this->VertexNeighbours[v].reserve(links[v]);
+      this->VertexFaces[v].reserve(faces[v]);
+    }
+  }
   auto link = [this](Index a, Index b)
   {
     this->VertexNeighbours[a].push_back(b);
@@ -518,6 +541,11 @@ bool MedialEdgeCollapse::CreatesFold(Index a, Index b, const Point3& newPosition
     return false;
   }
   // Rare: were there as many folds before (in a medial mesh given as input)?
+  // That does not depend on the placement: counted once per edge.
+  if (this->FoldsBeforeA == a && this->FoldsBeforeB == b)
+  {
+    return foldsAfter > this->FoldsBefore;
+  }
   auto has = [](const std::array<Index, 3>& t, Index v)
   { return t[0] == v || t[1] == v || t[2] == v; };
   auto& before = this->CentreBefore;
@@ -559,7 +587,10 @@ bool MedialEdgeCollapse::CreatesFold(Index a, Index b, const Point3& newPosition
   }
   std::sort(outer.begin(), outer.end());
   outer.erase(std::unique(outer.begin(), outer.end()), outer.end());
-  return foldsAfter > this->CountFolds(before, -1, newPosition);
+  this->FoldsBefore = this->CountFolds(before, -1, newPosition);
+  this->FoldsBeforeA = a;
+  this->FoldsBeforeB = b;
+  return foldsAfter > this->FoldsBefore;
 }
 
 // When the optimal sphere would break validity: the policy's fallback
@@ -658,6 +689,7 @@ bool MedialEdgeCollapse::CollapseUntil(
     // The link condition depends on the connectivity alone: checked once,
     // not for every placement tried.
     this->EulerNeutral = false;
+    this->FoldsBeforeA = this->FoldsBeforeB = -1;
     const bool guarded =
       this->NumberAlive <= this->Options.TopologyGuardVertexCount && !this->Relaxed;
     if ((guarded && !this->LinkConditionHolds(c.A, c.B)) ||

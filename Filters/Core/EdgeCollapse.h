@@ -171,6 +171,10 @@ private:
   std::vector<std::array<Index, 3>> CentreBefore, Outer;
   std::vector<std::array<Index, 4>> EdgeIncidences; // (min, max, apex, centre?)
   std::vector<std::array<Index, 2>> RingPairs, Spokes;
+  // Folds around (a, b) before its collapse, which every placement tried
+  // for that edge compares with: counted once per edge taken from the queue.
+  Index FoldsBeforeA = -1, FoldsBeforeB = -1;
+  std::size_t FoldsBefore = 0;
   EdgeCollapseCounts Counts;
   bool Relaxed = false;            // the link condition no longer guards collapses
   bool EulerNeutral = false;       // the collapse being made passed as Euler-neutral

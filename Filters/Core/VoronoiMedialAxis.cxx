@@ -24,6 +24,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -256,7 +257,8 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
     std::sort(key.begin(), key.end());
     keyed.emplace_back(key, c);
   }
-  std::sort(
+  // Keys are unique (one per cell): the parallel sort is deterministic.
+  tbb::parallel_sort(
     keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<Delaunay::Cell_handle> cells;
   cells.reserve(keyed.size());
@@ -494,7 +496,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
     }
   }
   decltype(adjacentInside)().swap(adjacentInside);
-  std::sort(mesh.Edges.begin(), mesh.Edges.end());
+  tbb::parallel_sort(mesh.Edges.begin(), mesh.Edges.end());
   mesh.Edges.erase(std::unique(mesh.Edges.begin(), mesh.Edges.end()), mesh.Edges.end());
   if (!report(0.8))
   {
@@ -603,7 +605,8 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       polygons.insert(polygons.end(), polygon.begin(), polygon.end());
     }
   }
-  std::sort(complete.begin(), complete.end(),
+  // One face per Delaunay edge: unique keys, a deterministic parallel sort.
+  tbb::parallel_sort(complete.begin(), complete.end(),
     [](const Face& a, const Face& b) { return a.Sites < b.Sites; });
 
   std::vector<char> filtered; // per triangle: its face fails the concave test
@@ -641,7 +644,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       std::sort(key.begin(), key.end());
       sorted[f] = { key, f };
     }
-    std::sort(sorted.begin(), sorted.end());
+    tbb::parallel_sort(sorted.begin(), sorted.end());
     std::vector<char> keep(mesh.Faces.size(), 1);
     for (std::size_t i = 1; i < sorted.size(); ++i)
     {

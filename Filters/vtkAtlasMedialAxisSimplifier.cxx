@@ -190,7 +190,8 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
       { "RelaxedCollapses", result.RelaxedCollapses }, { "MergedFaces", result.MergedFaces },
       { "EulerNeutralCollapses", result.EulerNeutralCollapses },
       { "SnappedVertices", result.SnappedVertices }, { "ForcedSnaps", result.ForcedSnaps },
-      { "FoldingAllowedCollapses", result.FoldingAllowedCollapses } })
+      { "FoldingAllowedCollapses", result.FoldingAllowedCollapses },
+      { "CollapseBatches", result.Batches } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }

@@ -27,6 +27,14 @@
  * radius 0 and stay there; snaps that fold or flatten a triangle are made
  * last and the collapses around them first (field data ForcedSnaps).
  *
+ * The cheapest collapses whose edges lie at least five edges apart are made
+ * at once, in parallel, in batches of up to 64 (field data CollapseBatches):
+ * the result is the same at any thread count, though not exactly that of
+ * strictly one collapse at a time. With PreserveSharpFeatures the collapses
+ * are made strictly one at a time: which medial vertices end up on a
+ * fillet's centre line depends on the order, and vtkFilletDetector's
+ * refinement of the line is sensitive to it.
+ *
  * Output port 0: the simplified medial mesh (input units) with `Radius`,
  * the final Atlas (`AtlasSites`, `AtlasOffsets`, `AtlasCount`), point data
  * `FeatureVertex` and cell data `StabilityRatio` (per line: its edge's ratio;

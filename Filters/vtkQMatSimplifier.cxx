@@ -89,7 +89,7 @@ int vtkQMatSimplifier::RequestData(
       { "MergedFaces", result.MergedFaces },
       { "EulerNeutralCollapses", result.EulerNeutralCollapses },
       { "FacesWithoutTangentPlanes", result.FacesWithoutTangentPlanes },
-      { "NestedCones", result.NestedCones } })
+      { "NestedCones", result.NestedCones }, { "CollapseBatches", result.Batches } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }

@@ -24,7 +24,8 @@
  * `AtlasOffsets`) every output vertex gets the union of the Atlases merged
  * into it. Field data: Collapses, RejectedCollapses, RelaxedCollapses,
  * FoldingAllowedCollapses, MergedFaces, FacesWithoutTangentPlanes,
- * NestedCones.
+ * NestedCones, CollapseBatches (equal to Collapses + RejectedCollapses: as in
+ * the published method, one collapse at a time).
  */
 #ifndef vtkQMatSimplifier_h
 #define vtkQMatSimplifier_h

@@ -8,6 +8,7 @@
 #include <LBFGS.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <tuple>
@@ -86,12 +87,13 @@ public:
     const MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) const override;
   std::array<Sphere, 3> FallbackSpheres(
     const MedialEdgeCollapse& mesh, Index a, Index b) const override;
-  void Merged(MedialEdgeCollapse& mesh, Index a, Index b) override;
+  void Merged(MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) override;
   std::vector<Index> Prepare(MedialEdgeCollapse& mesh) override;
-  void AfterCollapse(MedialEdgeCollapse& mesh, Index a) override;
+  void AfterCollapse(MedialEdgeCollapse& mesh, Index a, CollapseScratch& scratch) override;
   AtlasMedialMesh Output(const MedialEdgeCollapse& mesh) const;
 
-  std::size_t Snapped = 0, ForcedSnaps = 0;
+  std::atomic<std::size_t> Snapped{ 0 }; // by collapses running at once
+  std::size_t ForcedSnaps = 0;
 
 private:
   Placement Solve(const MedialEdgeCollapse& mesh, const SphereQuadric& q,
@@ -99,7 +101,7 @@ private:
   double Weight(double spike) const;
   // Moves feature vertex v onto its sharp edge (r = 0); with keepValid, not
   // when that would make a zero-area or folded triangle. True if moved.
-  bool Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid);
+  bool Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid, CollapseScratch& scratch);
   void UpdateFeature(Index v);
   // A feature vertex already on its sharp edge (snapped, radius 0).
   bool OnFeature(const MedialEdgeCollapse& mesh, Index v) const
@@ -118,7 +120,6 @@ private:
   std::vector<std::vector<Index>> Atlas;
   std::vector<SphereQuadric> AtlasQuadric; // regular cells of the Atlas, each once
   std::vector<char> Feature;
-  std::vector<Index> MergedAtlas; // scratch
 };
 
 AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
@@ -427,10 +428,10 @@ std::array<Sphere, 3> AtlasPolicy::FallbackSpheres(
   return { candidates[order[0]], candidates[order[1]], candidates[order[2]] };
 }
 
-void AtlasPolicy::Merged(MedialEdgeCollapse&, Index a, Index b)
+void AtlasPolicy::Merged(MedialEdgeCollapse&, Index a, Index b, CollapseScratch& scratch)
 {
   // Atlas and its quadric: Q(A u B) = Q(A) + Q(B) - Q(A n B).
-  auto& atlas = this->MergedAtlas;
+  auto& atlas = scratch.Indices;
   atlas.clear();
   atlas.reserve(this->Atlas[a].size() + this->Atlas[b].size());
   this->AtlasQuadric[a] += this->AtlasQuadric[b];
@@ -469,7 +470,7 @@ void AtlasPolicy::Merged(MedialEdgeCollapse&, Index a, Index b)
 // Feature vertices on one straight edge are collinear: a triangle of three
 // of them would have zero area, and a snap can fold a triangle over its
 // neighbour.
-bool AtlasPolicy::Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid)
+bool AtlasPolicy::Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid, CollapseScratch& scratch)
 {
   SphereQuadric q = this->AtlasQuadric[v];
   Point3 sum{ 0, 0, 0 };
@@ -487,7 +488,7 @@ bool AtlasPolicy::Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid)
     return false;
   }
   const Point3 target{ x[0], x[1], x[2] };
-  if (keepValid && !mesh.MoveKeepsValid(v, target))
+  if (keepValid && !mesh.MoveKeepsValid(v, target, scratch))
   {
     return false;
   }
@@ -505,16 +506,17 @@ std::vector<Index> AtlasPolicy::Prepare(MedialEdgeCollapse& mesh)
   std::vector<Index> forced;
   if (this->Options.PreserveSharpFeatures)
   {
+    CollapseScratch scratch;
     for (std::size_t v = 0; v < mesh.NumberOfVertices(); ++v)
     {
-      if (this->Feature[v] && !this->Snap(mesh, static_cast<Index>(v), true))
+      if (this->Feature[v] && !this->Snap(mesh, static_cast<Index>(v), true, scratch))
       {
         forced.push_back(static_cast<Index>(v));
       }
     }
     for (Index v : forced)
     {
-      this->Snap(mesh, v, false);
+      this->Snap(mesh, v, false, scratch);
     }
   }
   this->ForcedSnaps = forced.size();
@@ -522,17 +524,17 @@ std::vector<Index> AtlasPolicy::Prepare(MedialEdgeCollapse& mesh)
 }
 
 // Retries the snap of feature vertices off their edge at and around a.
-void AtlasPolicy::AfterCollapse(MedialEdgeCollapse& mesh, Index a)
+void AtlasPolicy::AfterCollapse(MedialEdgeCollapse& mesh, Index a, CollapseScratch& scratch)
 {
   if (this->Feature[a] && !this->OnFeature(mesh, a))
   {
-    this->Snap(mesh, a, true);
+    this->Snap(mesh, a, true, scratch);
   }
   for (Index u : mesh.Neighbours(a))
   {
     if (this->Feature[u] && !this->OnFeature(mesh, u))
     {
-      this->Snap(mesh, u, true);
+      this->Snap(mesh, u, true, scratch);
     }
   }
 }
@@ -563,6 +565,10 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   c.StrictLinkConditionVertexCount = o.StrictLinkConditionVertexCount;
   c.StrictTopologyGuard = o.StrictTopologyGuard;
   c.PreventFolds = o.PreventFolds;
+  // With sharp features (CAD) the strictly sequential order: which medial
+  // vertices end up on a fillet's centre line depends on the order, and the
+  // fillet detector's refinement of that line is sensitive to it.
+  c.MaximumBatch = o.PreserveSharpFeatures ? 1 : c.MaximumBatch;
   c.Progress = o.Progress;
   return c;
 }
@@ -588,7 +594,7 @@ AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
   {
     result.Medial = policy.Output(mesh);
     result.ForcedSnaps = policy.ForcedSnaps;
-    result.SnappedVertices = policy.Snapped;
+    result.SnappedVertices = policy.Snapped.load();
   }
   return result;
 }

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <functional>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -30,7 +29,10 @@ namespace medialaxis
 ///
 /// Order: cheapest first; equal costs by (A, B), then by versions, so the
 /// pop sequence depends on the pushed entries alone, not on the heap layout.
-template <typename Payload>
+///
+/// `IsCurrent` tells whether an entry still describes the mesh: a functor
+/// type rather than std::function, since it runs on every entry popped.
+template <typename Payload, typename IsCurrent>
 class CollapseQueue
 {
 public:
@@ -42,10 +44,21 @@ public:
     Payload Target;
   };
 
-  /// `isCurrent` tells whether an entry still describes the mesh.
-  explicit CollapseQueue(std::function<bool(const Entry&)> isCurrent)
-    : IsCurrent(std::move(isCurrent))
+  explicit CollapseQueue(IsCurrent isCurrent)
+    : Current(std::move(isCurrent))
   {
+  }
+
+  /// Pushes many entries at once: a linear heapify rather than one sift-up
+  /// each.
+  void PushAll(const std::vector<Entry>& entries)
+  {
+    for (const Entry& entry : entries)
+    {
+      this->Entries.push_back(entry);
+      this->Heap.push_back({ entry.Cost, static_cast<std::uint32_t>(this->Entries.size() - 1) });
+    }
+    this->Heapify();
   }
 
   void Push(const Entry& entry)
@@ -70,26 +83,32 @@ public:
     }
   }
 
-  /// Removes and returns the cheapest current entry; false when none is left.
-  bool PopCurrent(Entry& entry)
+  /// The cheapest current entry (stale ones above it are dropped), or null
+  /// when none is left; valid until the next push.
+  const Entry* TopCurrent()
   {
     while (!this->Heap.empty())
     {
       const std::uint32_t slot = this->Heap.front().Slot;
-      this->Heap.front() = this->Heap.back();
-      this->Heap.pop_back();
-      if (!this->Heap.empty())
+      if (this->Current(this->Entries[slot]))
       {
-        this->SiftDown(0);
+        return &this->Entries[slot];
       }
-      entry = this->Entries[slot];
-      this->FreeSlots.push_back(slot);
-      if (this->IsCurrent(entry))
-      {
-        return true;
-      }
+      this->PopTop();
     }
-    return false;
+    return nullptr;
+  }
+
+  /// Removes the cheapest entry, current or not.
+  void PopTop()
+  {
+    this->FreeSlots.push_back(this->Heap.front().Slot);
+    this->Heap.front() = this->Heap.back();
+    this->Heap.pop_back();
+    if (!this->Heap.empty())
+    {
+      this->SiftDown(0);
+    }
   }
 
   void Clear()
@@ -169,7 +188,7 @@ private:
     std::size_t kept = 0;
     for (const Key& key : this->Heap)
     {
-      if (this->IsCurrent(this->Entries[key.Slot]))
+      if (this->Current(this->Entries[key.Slot]))
       {
         this->Heap[kept++] = key;
       }
@@ -179,18 +198,24 @@ private:
       }
     }
     this->Heap.resize(kept);
-    for (std::size_t i = kept / Arity + 1; i-- > 0;)
+    this->Heapify();
+  }
+
+  void Heapify()
+  {
+    const std::size_t n = this->Heap.size();
+    for (std::size_t i = n / Arity + 1; i-- > 0;)
     {
-      if (i < kept)
+      if (i < n)
       {
         this->SiftDown(i);
       }
     }
-    this->SizeAfterCleanUp = kept;
+    this->SizeAfterCleanUp = n;
     this->PushesSinceCleanUp = 0;
   }
 
-  std::function<bool(const Entry&)> IsCurrent;
+  IsCurrent Current;
   std::vector<Key> Heap;
   std::vector<Entry> Entries; // by slot
   std::vector<std::uint32_t> FreeSlots;

@@ -29,12 +29,7 @@ MedialEdgeCollapse::MedialEdgeCollapse(const MedialMesh& input, const Normalisat
   : Options(options)
   , Policy(policy)
   , UnitFrame(frame)
-  , Queue(
-      [this](const Candidate& c)
-      {
-        return this->VertexAlive[c.A] && this->VertexAlive[c.B] &&
-          c.VersionA == this->Version[c.A] && c.VersionB == this->Version[c.B];
-      })
+  , Queue(EndpointsUnchanged{ &this->Version })
 {
   this->FoldGuard = options.PreventFolds;
   const std::size_t nv = input.Centers.size();
@@ -153,18 +148,9 @@ MedialEdgeCollapse::Candidate MedialEdgeCollapse::MakeCandidate(
   return { e.Cost, a, b, this->Version[a], this->Version[b], e.Target };
 }
 
-void MedialEdgeCollapse::Push(Index a, Index b)
+bool MedialEdgeCollapse::LinkConditionHolds(Index a, Index b, CollapseScratch& scratch) const
 {
-  const Candidate c = this->MakeCandidate(a, b, this->Scratch);
-  if (c.Cost < HUGE_VAL)
-  {
-    this->Queue.Push(c);
-  }
-}
-
-bool MedialEdgeCollapse::LinkConditionHolds(Index a, Index b)
-{
-  this->EulerNeutral = false;
+  scratch.EulerNeutral = false;
   // Dey's vertex condition: the common neighbours of a and b must be exactly
   // the apices of faces (a, b, x). With FringeCollapses (or, for spike
   // edges, EulerNeutralSpikeCollapses), where it fails the collapse is
@@ -245,13 +231,13 @@ bool MedialEdgeCollapse::LinkConditionHolds(Index a, Index b)
       }
     }
   }
-  this->EulerNeutral = extra == merges;
-  return this->EulerNeutral;
+  scratch.EulerNeutral = extra == merges;
+  return scratch.EulerNeutral;
 }
 
 // Merges b into a at `target` if the result stays a valid medial mesh (the
 // caller has checked the link condition).
-bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target)
+bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target, CollapseScratch& scratch)
 {
   const Point3 newPosition{ target[0], target[1], target[2] };
   auto position = [this](Index v) {
@@ -267,7 +253,7 @@ bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target)
   // (a, b, x, y) bound a tetrahedral bubble, which the merge removes: the
   // edge part of Dey's link condition is relaxed on purpose, since a bubble
   // in the medial axis of a solid without cavities is always spurious.
-  auto& keys = this->FaceKeys;
+  auto& keys = scratch.FaceKeys;
   keys.clear();
   for (Index v : { a, b })
   {
@@ -316,7 +302,7 @@ bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target)
     }
   }
   std::sort(keys.begin(), keys.end());
-  auto& mergedAway = this->MergedAway;
+  auto& mergedAway = scratch.MergedAway;
   mergedAway.clear();
   for (std::size_t i = 1; i < keys.size(); ++i)
   {
@@ -327,7 +313,7 @@ bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target)
   }
 
   if (this->FoldGuard && (this->Options.FoldTestOnSpikes || !spike) &&
-    this->CreatesFold(a, b, newPosition))
+    this->CreatesFold(a, b, newPosition, scratch))
   {
     return false;
   }
@@ -339,8 +325,7 @@ bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target)
   }
   // An Euler-neutral collapse's merges pair up with the loops it closes:
   // they close no bubble.
-  (this->EulerNeutral ? this->Counts.EulerNeutralMerges : this->Counts.MergedFaces) +=
-    mergedAway.size();
+  (scratch.EulerNeutral ? scratch.EulerNeutralMerges : scratch.MergedFaces) += mergedAway.size();
   for (Index f : this->VertexFaces[b])
   {
     if (!this->FaceAlive[f])
@@ -375,7 +360,7 @@ bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target)
       n.erase(std::unique(n.begin(), n.end()), n.end());
     }
   }
-  auto& merged = this->MergedNeighbours;
+  auto& merged = scratch.MergedNeighbours;
   merged.clear();
   std::set_union(this->VertexNeighbours[a].begin(), this->VertexNeighbours[a].end(),
     this->VertexNeighbours[b].begin(), this->VertexNeighbours[b].end(), std::back_inserter(merged));
@@ -387,26 +372,25 @@ bool MedialEdgeCollapse::Collapse(Index a, Index b, const Sphere& target)
   std::vector<Index>().swap(this->VertexFaces[b]);
 
   this->Spheres[a] = target;
-  this->VertexAlive[b] = 0;
-  --this->NumberAlive;
+  this->VertexAlive[b] = 0; // NumberAlive is counted down after the batch
   ++this->Version[a];
   ++this->Version[b];
-  this->Policy.Merged(*this, a, b);
+  this->Policy.Merged(*this, a, b, scratch);
   return true;
 }
 
 // Folded manifold edges among the edges of the `centre` faces, with the
-// faces across them taken from `centre` and this->Outer; vertex `moved` sits
+// faces across them taken from `centre` and scratch.Outer; vertex `moved` sits
 // at `movedTo`.
-std::size_t MedialEdgeCollapse::CountFolds(
-  const std::vector<std::array<Index, 3>>& centre, Index moved, const Point3& movedTo)
+std::size_t MedialEdgeCollapse::CountFolds(const std::vector<std::array<Index, 3>>& centre,
+  Index moved, const Point3& movedTo, CollapseScratch& scratch) const
 {
   auto position = [&](Index v)
   {
     return v == moved ? movedTo
                       : Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
   };
-  auto& incidences = this->EdgeIncidences;
+  auto& incidences = scratch.EdgeIncidences;
   incidences.clear();
   auto add = [&incidences](const std::vector<std::array<Index, 3>>& faces, Index isCentre)
   {
@@ -420,7 +404,7 @@ std::size_t MedialEdgeCollapse::CountFolds(
     }
   };
   add(centre, 1);
-  add(this->Outer, 0);
+  add(scratch.Outer, 0);
   std::sort(incidences.begin(), incidences.end());
   std::size_t folds = 0;
   for (std::size_t i = 0; i < incidences.size();)
@@ -447,14 +431,15 @@ std::size_t MedialEdgeCollapse::CountFolds(
 // lie between two such faces, ring edges (u, v) between one and the faces
 // across that do not move. A fast path for the common case (no fold): no
 // sorting, and the pre-collapse state is looked at only when needed.
-std::size_t MedialEdgeCollapse::FoldsAroundMerged(Index a, Index b, const Point3& newPosition)
+std::size_t MedialEdgeCollapse::FoldsAroundMerged(
+  Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const
 {
   auto position = [this](Index v) {
     return Point3{ this->Spheres[v][0], this->Spheres[v][1], this->Spheres[v][2] };
   };
-  auto& ring = this->RingPairs;
+  auto& ring = scratch.RingPairs;
   ring.clear();
-  const auto& keys = this->FaceKeys;
+  const auto& keys = scratch.FaceKeys;
   for (std::size_t i = 0; i < keys.size(); ++i)
   {
     if (i > 0 && keys[i].first == keys[i - 1].first)
@@ -467,7 +452,7 @@ std::size_t MedialEdgeCollapse::FoldsAroundMerged(Index a, Index b, const Point3
                              : std::array<Index, 2>{ t[0], t[1] });
   }
   // Spoke (a, u) between exactly two faces (a, u, x) and (a, u, y).
-  auto& spokes = this->Spokes;
+  auto& spokes = scratch.Spokes;
   spokes.clear();
   for (const auto& pair : ring)
   {
@@ -533,22 +518,23 @@ std::size_t MedialEdgeCollapse::FoldsAroundMerged(Index a, Index b, const Point3
 // other that were not folded before. (A face's own normal may turn by less
 // than the flip test allows and still fold over its neighbour; and the
 // flip test is skipped on spike edges.)
-bool MedialEdgeCollapse::CreatesFold(Index a, Index b, const Point3& newPosition)
+bool MedialEdgeCollapse::CreatesFold(
+  Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const
 {
-  const std::size_t foldsAfter = this->FoldsAroundMerged(a, b, newPosition);
+  const std::size_t foldsAfter = this->FoldsAroundMerged(a, b, newPosition, scratch);
   if (foldsAfter == 0)
   {
     return false;
   }
   // Rare: were there as many folds before (in a medial mesh given as input)?
   // That does not depend on the placement: counted once per edge.
-  if (this->FoldsBeforeA == a && this->FoldsBeforeB == b)
+  if (scratch.FoldsBeforeA == a && scratch.FoldsBeforeB == b)
   {
-    return foldsAfter > this->FoldsBefore;
+    return foldsAfter > scratch.FoldsBefore;
   }
   auto has = [](const std::array<Index, 3>& t, Index v)
   { return t[0] == v || t[1] == v || t[2] == v; };
-  auto& before = this->CentreBefore;
+  auto& before = scratch.CentreBefore;
   before.clear();
   for (Index v : { a, b })
   {
@@ -562,7 +548,7 @@ bool MedialEdgeCollapse::CreatesFold(Index a, Index b, const Point3& newPosition
     }
   }
   // The faces across the ring edges (those without a or b).
-  auto& outer = this->Outer;
+  auto& outer = scratch.Outer;
   outer.clear();
   for (const auto& t : before)
   {
@@ -587,19 +573,19 @@ bool MedialEdgeCollapse::CreatesFold(Index a, Index b, const Point3& newPosition
   }
   std::sort(outer.begin(), outer.end());
   outer.erase(std::unique(outer.begin(), outer.end()), outer.end());
-  this->FoldsBefore = this->CountFolds(before, -1, newPosition);
-  this->FoldsBeforeA = a;
-  this->FoldsBeforeB = b;
-  return foldsAfter > this->FoldsBefore;
+  scratch.FoldsBefore = this->CountFolds(before, -1, newPosition, scratch);
+  scratch.FoldsBeforeA = a;
+  scratch.FoldsBeforeB = b;
+  return foldsAfter > scratch.FoldsBefore;
 }
 
 // When the optimal sphere would break validity: the policy's fallback
 // spheres, best first.
-bool MedialEdgeCollapse::CollapseAtFallback(Index a, Index b)
+bool MedialEdgeCollapse::CollapseAtFallback(Index a, Index b, CollapseScratch& scratch)
 {
   for (const Sphere& s : this->Policy.FallbackSpheres(*this, a, b))
   {
-    if (this->Collapse(a, b, s))
+    if (this->Collapse(a, b, s, scratch))
     {
       return true;
     }
@@ -609,9 +595,10 @@ bool MedialEdgeCollapse::CollapseAtFallback(Index a, Index b)
 
 // Whether moving v to `target` keeps its faces non-degenerate and folds no
 // more of them than before.
-bool MedialEdgeCollapse::MoveKeepsValid(Index v, const Point3& target)
+bool MedialEdgeCollapse::MoveKeepsValid(
+  Index v, const Point3& target, CollapseScratch& scratch) const
 {
-  auto& faces = this->FaceKeys;
+  auto& faces = scratch.FaceKeys;
   faces.clear();
   for (Index f : this->VertexFaces[v])
   {
@@ -630,8 +617,8 @@ bool MedialEdgeCollapse::MoveKeepsValid(Index v, const Point3& target)
     faces.emplace_back(sorted, f);
   }
   std::sort(faces.begin(), faces.end());
-  return this->FoldsAroundMerged(v, -1, target) <=
-    this->FoldsAroundMerged(v, -1, this->Position(v));
+  return this->FoldsAroundMerged(v, -1, target, scratch) <=
+    this->FoldsAroundMerged(v, -1, this->Position(v), scratch);
 }
 
 void MedialEdgeCollapse::PushAllEdges()
@@ -663,11 +650,114 @@ void MedialEdgeCollapse::PushAllEdges()
         candidates[k] = this->MakeCandidate(edges[k][0], edges[k][1], scratch);
       }
     });
-  for (const Candidate& c : candidates)
+  candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                     [](const Candidate& c) { return !(c.Cost < HUGE_VAL); }),
+    candidates.end());
+  this->Queue.PushAll(candidates);
+}
+
+namespace
+{
+// Most candidates passed over while a batch fills: each goes back to the
+// queue, so looking far costs more than the larger batches gain.
+constexpr std::size_t LookAhead = 16;
+}
+
+// How many collapses may be taken at once: one near a vertex count where
+// the rules change (the topology guard, the strict link condition), so that
+// every collapse of a batch sees the rules of the sequential order.
+std::size_t MedialEdgeCollapse::BatchLimit(std::size_t target) const
+{
+  const std::size_t alive = this->NumberAlive;
+  std::size_t limit = std::min(
+    std::max<std::size_t>(this->Options.MaximumBatch, 1), alive > target ? alive - target : 1);
+  auto crosses = [alive, limit](std::size_t threshold)
+  { return alive > threshold && alive - threshold <= limit; };
+  if ((!this->Relaxed && crosses(this->Options.TopologyGuardVertexCount)) ||
+    crosses(this->Options.StrictLinkConditionVertexCount))
   {
-    if (c.Cost < HUGE_VAL)
+    limit = 1;
+  }
+  return std::max<std::size_t>(limit, 1);
+}
+
+// Claims the vertices within two edges of a or b for the batch under way;
+// false when one of them is claimed already (claiming them all anyway, so
+// that no costlier candidate near this one joins the batch either). Members of
+// a batch are then at least five edges apart: a collapse writes within one
+// edge of its endpoints and reads within three (the fold tests around
+// vertices its policy moves), so no member reads what another writes, and
+// the batch's result is that of any order.
+bool MedialEdgeCollapse::ClaimRegion(Index a, Index b)
+{
+  // One pass: a vertex stamped since the batch began, by another claim, is
+  // taken already.
+  const std::uint32_t claim = ++this->ClaimStamp;
+  bool free = true;
+  auto visit = [&](Index v)
+  {
+    std::uint32_t& stamp = this->RegionStamp[v];
+    free = free && (stamp < this->BatchStart || stamp == claim);
+    stamp = claim;
+  };
+  auto visitRing = [&](Index u)
+  {
+    for (Index w : this->VertexNeighbours[u])
     {
-      this->Queue.Push(c);
+      visit(w);
+    }
+  };
+  // The rings of the neighbours of a and b, each neighbour once (both lists
+  // are sorted; a and b are among them).
+  const auto& na = this->VertexNeighbours[a];
+  const auto& nb = this->VertexNeighbours[b];
+  std::size_t i = 0, j = 0;
+  while (i < na.size() || j < nb.size())
+  {
+    Index u;
+    if (j == nb.size() || (i < na.size() && na[i] < nb[j]))
+    {
+      u = na[i++];
+    }
+    else
+    {
+      u = nb[j++];
+      i += i < na.size() && na[i] == u ? 1 : 0;
+    }
+    visitRing(u);
+  }
+  return free;
+}
+
+// Collapses a batch member (or rejects it) and re-evaluates the edges of the
+// merged vertex: all within its claimed region.
+void MedialEdgeCollapse::CollapseTaken(BatchItem& item, CollapseScratch& scratch)
+{
+  const Candidate& c = item.Taken;
+  scratch.EulerNeutral = false;
+  scratch.FoldsBeforeA = scratch.FoldsBeforeB = -1;
+  scratch.MergedFaces = scratch.EulerNeutralMerges = 0;
+  item.Pushes.clear();
+  // The link condition depends on the connectivity alone: checked once,
+  // not for every placement tried.
+  const bool guarded =
+    this->NumberAlive <= this->Options.TopologyGuardVertexCount && !this->Relaxed;
+  item.Collapsed = !(guarded && !this->LinkConditionHolds(c.A, c.B, scratch)) &&
+    (this->Collapse(c.A, c.B, c.Target, scratch) || this->CollapseAtFallback(c.A, c.B, scratch));
+  if (!item.Collapsed)
+  {
+    return;
+  }
+  item.EulerNeutral = scratch.EulerNeutral;
+  item.MergedFaces = scratch.MergedFaces;
+  item.EulerNeutralMerges = scratch.EulerNeutralMerges;
+  this->Policy.AfterCollapse(*this, c.A, scratch);
+  for (Index u : this->VertexNeighbours[c.A])
+  {
+    const Candidate next = this->MakeCandidate(c.A, u, scratch);
+    if (next.Cost < HUGE_VAL)
+    {
+      item.Pushes.push_back(next);
     }
   }
 }
@@ -677,37 +767,98 @@ void MedialEdgeCollapse::PushAllEdges()
 bool MedialEdgeCollapse::CollapseUntil(
   std::size_t target, const std::function<bool(std::size_t)>& progress)
 {
-  std::size_t sinceReport = 0;
-  Candidate c;
-  while (this->NumberAlive > target && this->Queue.PopCurrent(c))
+  if (this->RegionStamp.size() != this->Spheres.size())
   {
-    if (c.Cost > this->Options.MaximumCost)
+    this->RegionStamp.assign(this->Spheres.size(), 0);
+    this->ClaimStamp = 0;
+  }
+  this->Batch.resize(std::max<std::size_t>(this->Options.MaximumBatch, 1));
+  tbb::enumerable_thread_specific<CollapseScratch> scratches;
+  std::size_t sinceReport = 0;
+  while (this->NumberAlive > target)
+  {
+    // The batch: the cheapest candidates whose regions are disjoint from
+    // those of every cheaper one looked at. Those passed over (their region
+    // meets a cheaper one's) go back to the queue.
+    const std::size_t limit = this->BatchLimit(target);
+    if (this->ClaimStamp > std::numeric_limits<std::uint32_t>::max() - 2 * (limit + LookAhead))
     {
-      this->Queue.Clear();
+      std::fill(this->RegionStamp.begin(), this->RegionStamp.end(), 0);
+      this->ClaimStamp = 0;
+    }
+    this->BatchStart = this->ClaimStamp + 1;
+    std::size_t taken = 0;
+    this->PassedOver.clear();
+    const Candidate* top = nullptr;
+    while (taken < limit && this->PassedOver.size() < LookAhead &&
+      (top = this->Queue.TopCurrent()) != nullptr)
+    {
+      if (top->Cost > this->Options.MaximumCost)
+      {
+        if (taken == 0)
+        {
+          this->Queue.Clear();
+        }
+        break;
+      }
+      // (The first candidate of a batch always finds its region free.)
+      if (this->ClaimRegion(top->A, top->B))
+      {
+        this->Batch[taken++].Taken = *top;
+      }
+      else
+      {
+        this->PassedOver.push_back(*top);
+      }
+      this->Queue.PopTop();
+    }
+    for (const Candidate& c : this->PassedOver)
+    {
+      this->Queue.Push(c);
+    }
+    if (taken == 0)
+    {
       break;
     }
-    // The link condition depends on the connectivity alone: checked once,
-    // not for every placement tried.
-    this->EulerNeutral = false;
-    this->FoldsBeforeA = this->FoldsBeforeB = -1;
-    const bool guarded =
-      this->NumberAlive <= this->Options.TopologyGuardVertexCount && !this->Relaxed;
-    if ((guarded && !this->LinkConditionHolds(c.A, c.B)) ||
-      (!this->Collapse(c.A, c.B, c.Target) && !this->CollapseAtFallback(c.A, c.B)))
+    ++this->Counts.Batches;
+    if (taken == 1)
     {
-      ++this->Counts.RejectedCollapses; // not retried until its neighbourhood changes
-      continue;
+      this->CollapseTaken(this->Batch[0], this->Scratch);
     }
-    ++this->Counts.Collapses;
-    this->Counts.EulerNeutralCollapses += this->EulerNeutral ? 1 : 0;
-    this->Counts.RelaxedCollapses += this->Relaxed ? 1 : 0;
-    this->Counts.FoldingAllowedCollapses += this->FoldsAllowedAtLast ? 1 : 0;
-    this->Policy.AfterCollapse(*this, c.A);
-    for (Index u : this->VertexNeighbours[c.A])
+    else
     {
-      this->Push(c.A, u);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, taken, 1),
+        [&](const tbb::blocked_range<std::size_t>& r)
+        {
+          auto& scratch = scratches.local();
+          for (std::size_t k = r.begin(); k != r.end(); ++k)
+          {
+            this->CollapseTaken(this->Batch[k], scratch);
+          }
+        });
     }
-    if (++sinceReport >= 256)
+    for (std::size_t k = 0; k < taken; ++k)
+    {
+      const BatchItem& item = this->Batch[k];
+      if (!item.Collapsed)
+      {
+        ++this->Counts.RejectedCollapses; // not retried until its neighbourhood changes
+        continue;
+      }
+      --this->NumberAlive;
+      ++this->Counts.Collapses;
+      this->Counts.EulerNeutralCollapses += item.EulerNeutral ? 1 : 0;
+      this->Counts.RelaxedCollapses += this->Relaxed ? 1 : 0;
+      this->Counts.FoldingAllowedCollapses += this->FoldsAllowedAtLast ? 1 : 0;
+      this->Counts.MergedFaces += item.MergedFaces;
+      this->Counts.EulerNeutralMerges += item.EulerNeutralMerges;
+      for (const Candidate& next : item.Pushes)
+      {
+        this->Queue.Push(next);
+      }
+      ++sinceReport;
+    }
+    if (sinceReport >= 256)
     {
       sinceReport = 0;
       if (!progress(this->NumberAlive))

@@ -56,14 +56,36 @@ struct EdgeCollapseOptions
   /// Refuse collapses that fold two triangles onto each other (dihedral
   /// angle below 10 degrees); allowed anyway once nothing else is left.
   bool PreventFolds = true;
+  /// Most collapses taken from the queue at once and made in parallel: the
+  /// cheapest candidates whose edges lie at least five edges apart (the
+  /// result is the same at any thread count, but not the strictly
+  /// sequential greedy order). 1: one at a time, in that order. Large
+  /// enough that a batch's work (tens of microseconds per collapse)
+  /// outweighs handing it to the threads.
+  std::size_t MaximumBatch = 64;
   /// Fraction in [0, 1]; returning false aborts.
   std::function<bool(double)> Progress;
 };
 
-/// Per-thread scratch space handed to CollapsePolicy::Evaluate.
+/// Scratch space and the state of the collapse under way: collapses of
+/// distant edges run at once, each thread with its own.
 struct CollapseScratch
 {
+  // For policies.
   std::vector<std::pair<Point3, double>> Anchors;
+  std::vector<Index> Indices;
+  // For the validity checks, reused to spare allocations on every collapse.
+  std::vector<std::pair<std::array<Index, 3>, Index>> FaceKeys;
+  std::vector<Index> MergedAway, MergedNeighbours;
+  std::vector<std::array<Index, 3>> CentreBefore, Outer;
+  std::vector<std::array<Index, 4>> EdgeIncidences; // (min, max, apex, centre?)
+  std::vector<std::array<Index, 2>> RingPairs, Spokes;
+  // Folds around (a, b) before its collapse, which every placement tried
+  // for that edge compares with: counted once per edge taken from the queue.
+  Index FoldsBeforeA = -1, FoldsBeforeB = -1;
+  std::size_t FoldsBefore = 0;
+  bool EulerNeutral = false; // the collapse passed the link test as Euler-neutral
+  std::size_t MergedFaces = 0, EulerNeutralMerges = 0;
 };
 
 class MedialEdgeCollapse;
@@ -87,17 +109,22 @@ public:
   virtual std::array<Sphere, 3> FallbackSpheres(
     const MedialEdgeCollapse& mesh, Index a, Index b) const = 0;
   /// b has just been merged into a (mesh.Sphere(a) is the merged sphere).
-  virtual void Merged(MedialEdgeCollapse& mesh, Index a, Index b) = 0;
+  /// Collapses of edges at least five edges apart run at once: this may
+  /// change data of a and b alone.
+  virtual void Merged(MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) = 0;
   /// Before the queue is filled: returns vertices whose edges must collapse
   /// before any other (e.g. after a forced move).
   virtual std::vector<Index> Prepare(MedialEdgeCollapse&) { return {}; }
-  /// After every collapse into a (e.g. retry moves that were refused).
-  virtual void AfterCollapse(MedialEdgeCollapse&, Index) {}
+  /// After every collapse into a (e.g. retry moves that were refused). May
+  /// move a and its neighbours, and read up to three edges away from a.
+  virtual void AfterCollapse(MedialEdgeCollapse&, Index, CollapseScratch&) {}
 };
 
 /// The medial mesh being simplified, in the policy's unit frame, with the
-/// collapse loop. Single-threaded apart from the first evaluation of every
-/// edge, and deterministic.
+/// collapse loop. Deterministic at any thread count: the cheapest edges are
+/// taken from the queue in batches whose members lie at least five edges
+/// apart (so that none reads what another writes), collapsed at once and
+/// their new candidates queued in batch order.
 class MedialEdgeCollapse
 {
 public:
@@ -131,23 +158,47 @@ public:
 
   /// Whether moving v to `target` makes no zero-area triangle and no more
   /// folds than it leaves.
-  bool MoveKeepsValid(Index v, const Point3& target);
+  bool MoveKeepsValid(Index v, const Point3& target, CollapseScratch& scratch) const;
   void Move(Index v, const Sphere& s) { this->Spheres[v] = s; }
 
 private:
-  using Candidate = CollapseQueue<Sphere>::Entry;
+  // A queued candidate is current while neither endpoint has changed (a
+  // vertex merged away has changed too).
+  struct EndpointsUnchanged
+  {
+    const std::vector<std::uint32_t>* Version;
+    template <typename Entry>
+    bool operator()(const Entry& c) const
+    {
+      return (*this->Version)[c.A] == c.VersionA && (*this->Version)[c.B] == c.VersionB;
+    }
+  };
+  using CandidateQueue = CollapseQueue<Sphere, EndpointsUnchanged>;
+  using Candidate = CandidateQueue::Entry;
+  // A candidate taken from the queue and what its collapse did.
+  struct BatchItem
+  {
+    Candidate Taken;
+    bool Collapsed = false;
+    bool EulerNeutral = false;
+    std::size_t MergedFaces = 0, EulerNeutralMerges = 0;
+    std::vector<Candidate> Pushes; // the merged vertex's edges, re-evaluated
+  };
   Candidate MakeCandidate(Index a, Index b, CollapseScratch& scratch) const;
-  void Push(Index a, Index b);
   void PushAllEdges();
   bool CollapseUntil(std::size_t target, const std::function<bool(std::size_t)>& progress);
-  // Sets EulerNeutral when it holds only as an Euler-neutral collapse.
-  bool LinkConditionHolds(Index a, Index b);
-  bool Collapse(Index a, Index b, const Sphere& target);
-  bool CollapseAtFallback(Index a, Index b);
-  bool CreatesFold(Index a, Index b, const Point3& newPosition);
-  std::size_t FoldsAroundMerged(Index a, Index b, const Point3& newPosition);
-  std::size_t CountFolds(
-    const std::vector<std::array<Index, 3>>& centre, Index moved, const Point3& movedTo);
+  std::size_t BatchLimit(std::size_t target) const;
+  bool ClaimRegion(Index a, Index b);
+  void CollapseTaken(BatchItem& item, CollapseScratch& scratch);
+  // Sets scratch.EulerNeutral when it holds only as an Euler-neutral collapse.
+  bool LinkConditionHolds(Index a, Index b, CollapseScratch& scratch) const;
+  bool Collapse(Index a, Index b, const Sphere& target, CollapseScratch& scratch);
+  bool CollapseAtFallback(Index a, Index b, CollapseScratch& scratch);
+  bool CreatesFold(Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const;
+  std::size_t FoldsAroundMerged(
+    Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const;
+  std::size_t CountFolds(const std::vector<std::array<Index, 3>>& centre, Index moved,
+    const Point3& movedTo, CollapseScratch& scratch) const;
 
   const EdgeCollapseOptions& Options;
   CollapsePolicy& Policy;
@@ -163,21 +214,17 @@ private:
   std::vector<std::array<Index, 3>> Faces;
   std::vector<char> FaceAlive;
 
-  CollapseQueue<Sphere> Queue;
-  // Scratch buffers, reused to spare allocations on every collapse.
-  CollapseScratch Scratch;
-  std::vector<std::pair<std::array<Index, 3>, Index>> FaceKeys;
-  std::vector<Index> MergedAway, MergedNeighbours;
-  std::vector<std::array<Index, 3>> CentreBefore, Outer;
-  std::vector<std::array<Index, 4>> EdgeIncidences; // (min, max, apex, centre?)
-  std::vector<std::array<Index, 2>> RingPairs, Spokes;
-  // Folds around (a, b) before its collapse, which every placement tried
-  // for that edge compares with: counted once per edge taken from the queue.
-  Index FoldsBeforeA = -1, FoldsBeforeB = -1;
-  std::size_t FoldsBefore = 0;
+  CandidateQueue Queue;
+  CollapseScratch Scratch; // for the serial parts
+  // The batch under way. Every candidate looked at claims the vertices
+  // within two edges of its endpoints: they carry the number of the claim,
+  // and those claimed since BatchStart belong to the batch.
+  std::vector<BatchItem> Batch;
+  std::vector<Candidate> PassedOver;
+  std::vector<std::uint32_t> RegionStamp;
+  std::uint32_t ClaimStamp = 0, BatchStart = 1;
   EdgeCollapseCounts Counts;
   bool Relaxed = false;            // the link condition no longer guards collapses
-  bool EulerNeutral = false;       // the collapse being made passed as Euler-neutral
   bool FoldGuard = true;           // collapses may not fold triangles onto each other
   bool FoldsAllowedAtLast = false; // the fold guard was lifted after a stall
 };

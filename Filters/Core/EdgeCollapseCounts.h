@@ -22,6 +22,10 @@ struct EdgeCollapseCounts
   /// merged (not counted in MergedFaces).
   std::size_t EulerNeutralCollapses = 0;
   std::size_t EulerNeutralMerges = 0;
+  /// Batches of candidates taken from the queue and collapsed at once
+  /// (EdgeCollapseOptions::MaximumBatch): (Collapses + RejectedCollapses) /
+  /// Batches is their mean size.
+  std::size_t Batches = 0;
   /// Wall time of the set-up and the first evaluation of every edge (the
   /// rest of the run is the collapsing itself).
   double QueueInitialisationSeconds = 0.0;

@@ -41,7 +41,7 @@ public:
     const MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) const override;
   std::array<Sphere, 3> FallbackSpheres(
     const MedialEdgeCollapse& mesh, Index a, Index b) const override;
-  void Merged(MedialEdgeCollapse& mesh, Index a, Index b) override;
+  void Merged(MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) override;
   AtlasMedialMesh Output(const MedialEdgeCollapse& mesh) const;
 
   std::size_t FacesWithoutTangentPlanes = 0, NestedCones = 0;
@@ -55,7 +55,6 @@ private:
   std::vector<SphereQuadric> Quadric; // per vertex
   bool HasAtlas = false;
   std::vector<std::vector<Index>> Atlas;
-  std::vector<Index> MergedAtlas; // scratch
 };
 
 QMatPolicy::QMatPolicy(const AtlasMedialMesh& input, const QMatSimplifierOptions& options)
@@ -312,14 +311,14 @@ std::array<Sphere, 3> QMatPolicy::FallbackSpheres(
 }
 
 // Eq. 7: the merged sphere stands for the slabs of both.
-void QMatPolicy::Merged(MedialEdgeCollapse&, Index a, Index b)
+void QMatPolicy::Merged(MedialEdgeCollapse&, Index a, Index b, CollapseScratch& scratch)
 {
   this->Quadric[a] += this->Quadric[b];
   if (!this->HasAtlas)
   {
     return;
   }
-  auto& merged = this->MergedAtlas;
+  auto& merged = scratch.Indices;
   merged.clear();
   std::set_union(this->Atlas[a].begin(), this->Atlas[a].end(), this->Atlas[b].begin(),
     this->Atlas[b].end(), std::back_inserter(merged));
@@ -360,6 +359,8 @@ QMatSimplifierResult SimplifyMedialAxisQMat(
   collapse.FoldTestOnSpikes = false;
   collapse.FringeCollapses = options.EulerNeutralCollapses;
   collapse.StrictLinkConditionVertexCount = 0;
+  // The baseline as published: strictly one collapse at a time.
+  collapse.MaximumBatch = 1;
   collapse.Progress = options.Progress;
   MedialEdgeCollapse mesh(input.Mesh, policy.Frame(), collapse, policy);
   const double setupSeconds =

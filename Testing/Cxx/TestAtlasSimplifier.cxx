@@ -314,6 +314,44 @@ TEST(AtlasSimplifier, OutputIsValidAndDeterministic)
   }
 }
 
+// Without sharp features the collapses of distant edges are made in
+// parallel batches: the result must not depend on the thread count, and the
+// mesh must stay valid. With them, one collapse at a time.
+TEST(AtlasSimplifier, ParallelBatchesAreDeterministicAndValid)
+{
+  const TriangleMesh box = MakeRoundedBox({ 2.0, 1.5, 1.0 }, 0.2, 12);
+  SimplifiedRun runs[3];
+  for (int threads = 1; threads <= 3; ++threads)
+  {
+    runs[threads - 1] = RunWithThreads(threads, [&] { return Simplify(box, 8000, 300, false); });
+  }
+  const AtlasSimplifierResult& first = runs[0].Result;
+  const MedialMesh& m = first.Medial.Mesh;
+  EXPECT_EQ(m.Centers.size(), 300u);
+  EXPECT_TRUE(ValidateMedialMesh(m).IsValid()) << ValidateMedialMesh(m).Message;
+  EXPECT_EQ(DegenerateTriangles(m), 0u);
+  EXPECT_EQ(MeasureQuality(m).FoldedTriangles, 0u);
+  // Batches of several collapses each.
+  const std::size_t taken = first.Collapses + first.RejectedCollapses;
+  EXPECT_GT(first.Batches, 0u);
+  EXPECT_GE(taken, 4 * first.Batches) << taken << " candidates in " << first.Batches << " batches";
+  for (int k = 1; k < 3; ++k)
+  {
+    const MedialMesh& other = runs[k].Result.Medial.Mesh;
+    ASSERT_EQ(other.Centers.size(), m.Centers.size()) << k + 1 << " threads";
+    EXPECT_EQ(
+      0, std::memcmp(other.Centers.data(), m.Centers.data(), m.Centers.size() * sizeof(Point3)))
+      << k + 1 << " threads";
+    EXPECT_EQ(other.Radii, m.Radii);
+    EXPECT_EQ(other.Faces, m.Faces);
+    EXPECT_EQ(runs[k].Result.Medial.AtlasSites, first.Medial.AtlasSites);
+    EXPECT_EQ(runs[k].Result.Batches, first.Batches);
+  }
+
+  const SimplifiedRun cad = Simplify(box, 8000, 300, true);
+  EXPECT_EQ(cad.Result.Batches, cad.Result.Collapses + cad.Result.RejectedCollapses);
+}
+
 TEST(AtlasSimplifier, AtlasesKeepEverySite)
 {
   const SimplifiedRun run = Simplify(MakeCapsule(0.5, 2.0, 16), 3000, 100, false);

@@ -6,6 +6,8 @@
 #include "Vec3.h"
 
 #include <LBFGS.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <atomic>
@@ -187,32 +189,34 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
   const std::size_t nv = mesh.Centers.size();
   this->Atlas.resize(nv);
   this->AtlasQuadric.assign(nv, SphereQuadric());
-  for (std::size_t v = 0; v < nv; ++v)
-  {
-    for (Index k = input.AtlasOffsets[v]; k < input.AtlasOffsets[v + 1]; ++k)
-    {
-      const Index s = input.AtlasSites[k];
-      if (s >= 0 && static_cast<std::size_t>(s) < ns)
-      {
-        this->Atlas[v].push_back(s);
-      }
-    }
-    std::sort(this->Atlas[v].begin(), this->Atlas[v].end());
-    this->Atlas[v].erase(
-      std::unique(this->Atlas[v].begin(), this->Atlas[v].end()), this->Atlas[v].end());
-    for (Index s : this->Atlas[v])
-    {
-      if (!this->Invaginated[s])
-      {
-        this->AtlasQuadric[v] += this->CellQuadric[s];
-      }
-    }
-  }
   this->Feature.assign(nv, 0);
-  for (std::size_t v = 0; v < nv; ++v)
-  {
-    this->UpdateFeature(static_cast<Index>(v));
-  }
+  // Vertex by vertex, independently: in parallel.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 2048),
+    [&](const tbb::blocked_range<std::size_t>& range)
+    {
+      for (std::size_t v = range.begin(); v != range.end(); ++v)
+      {
+        auto& atlas = this->Atlas[v];
+        for (Index k = input.AtlasOffsets[v]; k < input.AtlasOffsets[v + 1]; ++k)
+        {
+          const Index s = input.AtlasSites[k];
+          if (s >= 0 && static_cast<std::size_t>(s) < ns)
+          {
+            atlas.push_back(s);
+          }
+        }
+        std::sort(atlas.begin(), atlas.end());
+        atlas.erase(std::unique(atlas.begin(), atlas.end()), atlas.end());
+        for (Index s : atlas)
+        {
+          if (!this->Invaginated[s])
+          {
+            this->AtlasQuadric[v] += this->CellQuadric[s];
+          }
+        }
+        this->UpdateFeature(static_cast<Index>(v));
+      }
+    });
 }
 
 // A feature vertex's Atlas touches a sharp convex edge and no concave one.

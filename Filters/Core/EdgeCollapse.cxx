@@ -86,11 +86,16 @@ MedialEdgeCollapse::MedialEdgeCollapse(const MedialMesh& input, const Normalisat
       this->VertexFaces[v].push_back(static_cast<Index>(f));
     }
   }
-  for (auto& n : this->VertexNeighbours)
-  {
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 2048),
+    [this](const tbb::blocked_range<std::size_t>& range)
+    {
+      for (std::size_t v = range.begin(); v != range.end(); ++v)
+      {
+        auto& n = this->VertexNeighbours[v];
+        std::sort(n.begin(), n.end());
+        n.erase(std::unique(n.begin(), n.end()), n.end());
+      }
+    });
   this->Version.assign(nv, 0);
   this->VertexAlive.assign(nv, 1);
   this->NumberAlive = nv;
@@ -451,30 +456,40 @@ std::size_t MedialEdgeCollapse::FoldsAroundMerged(
         : t[1] == a          ? std::array<Index, 2>{ t[0], t[2] }
                              : std::array<Index, 2>{ t[0], t[1] });
   }
-  // Spoke (a, u) between exactly two faces (a, u, x) and (a, u, y).
-  auto& spokes = scratch.Spokes;
-  spokes.clear();
-  for (const auto& pair : ring)
-  {
-    spokes.push_back({ pair[0], pair[1] });
-    spokes.push_back({ pair[1], pair[0] });
-  }
-  std::sort(spokes.begin(), spokes.end());
+  // Spoke (a, u) between exactly two faces (a, u, x) and (a, u, y), x < y.
+  // A dozen faces at most, mostly: pairwise scans beat sorting the spokes.
   std::size_t folds = 0;
-  for (std::size_t i = 0; i < spokes.size();)
+  for (std::size_t i = 0; i < ring.size(); ++i)
   {
-    std::size_t j = i + 1;
-    while (j < spokes.size() && spokes[j][0] == spokes[i][0])
+    for (int end = 0; end < 2; ++end)
     {
-      ++j;
+      const Index u = ring[i][end];
+      bool seen = false; // each spoke once, at the first face it is in
+      for (std::size_t k = 0; k < i && !seen; ++k)
+      {
+        seen = ring[k][0] == u || ring[k][1] == u;
+      }
+      if (seen)
+      {
+        continue;
+      }
+      const Index x = ring[i][1 - end];
+      Index y = -1;
+      std::size_t faces = 1;
+      for (std::size_t k = i + 1; k < ring.size() && faces <= 2; ++k)
+      {
+        if (ring[k][0] == u || ring[k][1] == u)
+        {
+          y = ring[k][0] == u ? ring[k][1] : ring[k][0];
+          ++faces;
+        }
+      }
+      if (faces == 2 &&
+        IsFold(newPosition, position(u), position(std::min(x, y)), position(std::max(x, y))))
+      {
+        ++folds;
+      }
     }
-    if (j - i == 2 &&
-      IsFold(
-        newPosition, position(spokes[i][0]), position(spokes[i][1]), position(spokes[i + 1][1])))
-    {
-      ++folds;
-    }
-    i = j;
   }
   for (std::size_t i = 0; i < ring.size(); ++i)
   {

@@ -79,7 +79,7 @@ struct CollapseScratch
   std::vector<Index> MergedAway, MergedNeighbours;
   std::vector<std::array<Index, 3>> CentreBefore, Outer;
   std::vector<std::array<Index, 4>> EdgeIncidences; // (min, max, apex, centre?)
-  std::vector<std::array<Index, 2>> RingPairs, Spokes;
+  std::vector<std::array<Index, 2>> RingPairs;
   // Folds around (a, b) before its collapse, which every placement tried
   // for that edge compares with: counted once per edge taken from the queue.
   Index FoldsBeforeA = -1, FoldsBeforeB = -1;

@@ -122,6 +122,7 @@ private:
   std::vector<std::vector<Index>> Atlas;
   std::vector<SphereQuadric> AtlasQuadric; // regular cells of the Atlas, each once
   std::vector<char> Feature;
+  std::vector<char> AnyInvaginated; // some cell of the Atlas is invaginated
 };
 
 AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
@@ -190,6 +191,7 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
   this->Atlas.resize(nv);
   this->AtlasQuadric.assign(nv, SphereQuadric());
   this->Feature.assign(nv, 0);
+  this->AnyInvaginated.assign(nv, 0);
   // Vertex by vertex, independently: in parallel.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 2048),
     [&](const tbb::blocked_range<std::size_t>& range)
@@ -212,6 +214,10 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
           if (!this->Invaginated[s])
           {
             this->AtlasQuadric[v] += this->CellQuadric[s];
+          }
+          else
+          {
+            this->AnyInvaginated[v] = 1;
           }
         }
         this->UpdateFeature(static_cast<Index>(v));
@@ -362,32 +368,57 @@ CollapsePolicy::Evaluation AtlasPolicy::Evaluate(
   const auto& A = this->Atlas[a];
   const auto& B = this->Atlas[b];
   std::size_t i = 0, j = 0;
-  while (i < A.size() || j < B.size())
+  if (!this->AnyInvaginated[a] && !this->AnyInvaginated[b])
   {
-    Index s;
-    bool shared = false;
-    if (j == B.size() || (i < A.size() && A[i] < B[j]))
+    // No anchors: only the shared cells matter (the same subtractions, in
+    // the same order, as below).
+    while (i < A.size() && j < B.size())
     {
-      s = A[i++];
+      if (A[i] < B[j])
+      {
+        ++i;
+      }
+      else if (B[j] < A[i])
+      {
+        ++j;
+      }
+      else
+      {
+        q -= this->CellQuadric[A[i]];
+        ++i;
+        ++j;
+      }
     }
-    else if (i == A.size() || B[j] < A[i])
+  }
+  else
+  {
+    while (i < A.size() || j < B.size())
     {
-      s = B[j++];
-    }
-    else
-    {
-      s = A[i];
-      ++i;
-      ++j;
-      shared = true;
-    }
-    if (this->Invaginated[s])
-    {
-      anchors.emplace_back(this->Site[s], this->CellArea[s]);
-    }
-    else if (shared)
-    {
-      q -= this->CellQuadric[s];
+      Index s;
+      bool shared = false;
+      if (j == B.size() || (i < A.size() && A[i] < B[j]))
+      {
+        s = A[i++];
+      }
+      else if (i == A.size() || B[j] < A[i])
+      {
+        s = B[j++];
+      }
+      else
+      {
+        s = A[i];
+        ++i;
+        ++j;
+        shared = true;
+      }
+      if (this->Invaginated[s])
+      {
+        anchors.emplace_back(this->Site[s], this->CellArea[s]);
+      }
+      else if (shared)
+      {
+        q -= this->CellQuadric[s];
+      }
     }
   }
   // Uniform Laplacian over the merged one-ring (Eq. 12).
@@ -467,6 +498,7 @@ void AtlasPolicy::Merged(MedialEdgeCollapse&, Index a, Index b, CollapseScratch&
   }
   this->Atlas[a].swap(atlas); // the old list becomes the next scratch
   std::vector<Index>().swap(this->Atlas[b]);
+  this->AnyInvaginated[a] = this->AnyInvaginated[a] || this->AnyInvaginated[b];
   this->UpdateFeature(a);
 }
 

@@ -2,6 +2,7 @@
 #include "AtlasSimplifier.h"
 
 #include "EdgeCollapse.h"
+#include "SortedLists.h"
 #include "SphereQuadric.h"
 #include "Vec3.h"
 
@@ -367,31 +368,15 @@ CollapsePolicy::Evaluation AtlasPolicy::Evaluate(
   anchors.clear();
   const auto& A = this->Atlas[a];
   const auto& B = this->Atlas[b];
-  std::size_t i = 0, j = 0;
   if (!this->AnyInvaginated[a] && !this->AnyInvaginated[b])
   {
     // No anchors: only the shared cells matter (the same subtractions, in
     // the same order, as below).
-    while (i < A.size() && j < B.size())
-    {
-      if (A[i] < B[j])
-      {
-        ++i;
-      }
-      else if (B[j] < A[i])
-      {
-        ++j;
-      }
-      else
-      {
-        q -= this->CellQuadric[A[i]];
-        ++i;
-        ++j;
-      }
-    }
+    ForEachShared(A, B, [&](Index s) { q -= this->CellQuadric[s]; });
   }
   else
   {
+    std::size_t i = 0, j = 0;
     while (i < A.size() || j < B.size())
     {
       Index s;

@@ -2,6 +2,7 @@
 #include "EdgeCollapse.h"
 
 #include "MedialMeshQuality.h"
+#include "SortedLists.h"
 #include "Vec3.h"
 
 #include <tbb/blocked_range.h>
@@ -183,27 +184,10 @@ bool MedialEdgeCollapse::LinkConditionHolds(Index a, Index b, CollapseScratch& s
       }
     }
   }
-  const auto& na = this->VertexNeighbours[a];
-  const auto& nb = this->VertexNeighbours[b];
   std::size_t extra = 0;
-  std::size_t i = 0, j = 0;
-  while (i < na.size() && j < nb.size())
-  {
-    if (na[i] < nb[j])
-    {
-      ++i;
-    }
-    else if (nb[j] < na[i])
-    {
-      ++j;
-    }
-    else
-    {
-      extra += std::find(apices, apices + apexCount, na[i]) == apices + apexCount ? 1 : 0;
-      ++i;
-      ++j;
-    }
-  }
+  ForEachShared(this->VertexNeighbours[a], this->VertexNeighbours[b],
+    [&](Index x)
+    { extra += std::find(apices, apices + apexCount, x) == apices + apexCount ? 1 : 0; });
   if (extra == 0)
   {
     return true;

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Walks over sorted id lists (neighbour lists, Atlases).
+#ifndef medialaxis_SortedLists_h
+#define medialaxis_SortedLists_h
+
+#include <cstddef>
+
+namespace medialaxis
+{
+/// Calls `shared(x)` for every value in both sorted, duplicate-free lists,
+/// in increasing order (std::set_intersection without an output buffer).
+template <typename List, typename Function>
+void ForEachShared(const List& a, const List& b, Function&& shared)
+{
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size())
+  {
+    if (a[i] < b[j])
+    {
+      ++i;
+    }
+    else if (b[j] < a[i])
+    {
+      ++j;
+    }
+    else
+    {
+      shared(a[i]);
+      ++i;
+      ++j;
+    }
+  }
+}
+}
+
+#endif

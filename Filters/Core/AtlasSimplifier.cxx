@@ -376,35 +376,18 @@ CollapsePolicy::Evaluation AtlasPolicy::Evaluate(
   }
   else
   {
-    std::size_t i = 0, j = 0;
-    while (i < A.size() || j < B.size())
-    {
-      Index s;
-      bool shared = false;
-      if (j == B.size() || (i < A.size() && A[i] < B[j]))
+    ForEachInUnion(A, B,
+      [&](Index s, bool shared)
       {
-        s = A[i++];
-      }
-      else if (i == A.size() || B[j] < A[i])
-      {
-        s = B[j++];
-      }
-      else
-      {
-        s = A[i];
-        ++i;
-        ++j;
-        shared = true;
-      }
-      if (this->Invaginated[s])
-      {
-        anchors.emplace_back(this->Site[s], this->CellArea[s]);
-      }
-      else if (shared)
-      {
-        q -= this->CellQuadric[s];
-      }
-    }
+        if (this->Invaginated[s])
+        {
+          anchors.emplace_back(this->Site[s], this->CellArea[s]);
+        }
+        else if (shared)
+        {
+          q -= this->CellQuadric[s];
+        }
+      });
   }
   // Uniform Laplacian over the merged one-ring (Eq. 12).
   Point3 sum{ 0, 0, 0 };
@@ -455,32 +438,15 @@ void AtlasPolicy::Merged(MedialEdgeCollapse&, Index a, Index b, CollapseScratch&
   atlas.clear();
   atlas.reserve(this->Atlas[a].size() + this->Atlas[b].size());
   this->AtlasQuadric[a] += this->AtlasQuadric[b];
-  {
-    const auto& A = this->Atlas[a];
-    const auto& B = this->Atlas[b];
-    std::size_t i = 0, j = 0;
-    while (i < A.size() || j < B.size())
+  ForEachInUnion(this->Atlas[a], this->Atlas[b],
+    [&](Index s, bool shared)
     {
-      if (j == B.size() || (i < A.size() && A[i] < B[j]))
+      if (shared && !this->Invaginated[s])
       {
-        atlas.push_back(A[i++]);
+        this->AtlasQuadric[a] -= this->CellQuadric[s];
       }
-      else if (i == A.size() || B[j] < A[i])
-      {
-        atlas.push_back(B[j++]);
-      }
-      else
-      {
-        if (!this->Invaginated[A[i]])
-        {
-          this->AtlasQuadric[a] -= this->CellQuadric[A[i]];
-        }
-        atlas.push_back(A[i]);
-        ++i;
-        ++j;
-      }
-    }
-  }
+      atlas.push_back(s);
+    });
   this->Atlas[a].swap(atlas); // the old list becomes the next scratch
   std::vector<Index>().swap(this->Atlas[b]);
   this->AnyInvaginated[a] = this->AnyInvaginated[a] || this->AnyInvaginated[b];

@@ -112,34 +112,18 @@ std::size_t MedialEdgeCollapse::MergedRingSums(
   Index a, Index b, Point3& sum, double& sumSquares) const
 {
   // Both lists are sorted: merge them, shared neighbours once.
-  const auto& na = this->VertexNeighbours[a];
-  const auto& nb = this->VertexNeighbours[b];
   std::size_t count = 0;
-  std::size_t i = 0, j = 0;
-  while (i < na.size() || j < nb.size())
-  {
-    Index u;
-    if (j == nb.size() || (i < na.size() && na[i] < nb[j]))
+  ForEachInUnion(this->VertexNeighbours[a], this->VertexNeighbours[b],
+    [&](Index u, bool)
     {
-      u = na[i++];
-    }
-    else if (i == na.size() || nb[j] < na[i])
-    {
-      u = nb[j++];
-    }
-    else
-    {
-      u = na[i++];
-      ++j;
-    }
-    if (u != a && u != b)
-    {
-      const Point3 p = this->Position(u);
-      sum = sum + p;
-      sumSquares += Dot(p, p);
-      ++count;
-    }
-  }
+      if (u != a && u != b)
+      {
+        const Point3 p = this->Position(u);
+        sum = sum + p;
+        sumSquares += Dot(p, p);
+        ++count;
+      }
+    });
   return count;
 }
 
@@ -708,23 +692,14 @@ bool MedialEdgeCollapse::ClaimRegion(Index a, Index b)
   };
   // The rings of the neighbours of a and b, each neighbour once (both lists
   // are sorted; a and b are among them).
-  const auto& na = this->VertexNeighbours[a];
-  const auto& nb = this->VertexNeighbours[b];
-  std::size_t i = 0, j = 0;
-  while (i < na.size() || j < nb.size())
-  {
-    Index u;
-    if (j == nb.size() || (i < na.size() && na[i] < nb[j]))
+  ForEachInUnion(this->VertexNeighbours[a], this->VertexNeighbours[b],
+    [&](Index u, bool)
     {
-      u = na[i++];
-    }
-    else
-    {
-      u = nb[j++];
-      i += i < na.size() && na[i] == u ? 1 : 0;
-    }
-    visitRing(u);
-  }
+      for (Index w : this->VertexNeighbours[u])
+      {
+        visit(w);
+      }
+    });
   return free;
 }
 

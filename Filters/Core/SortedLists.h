@@ -31,6 +31,31 @@ void ForEachShared(const List& a, const List& b, Function&& shared)
     }
   }
 }
+
+/// Calls `each(x, inBoth)` for every value in either sorted, duplicate-free
+/// list, once, in increasing order (std::set_union without an output buffer).
+template <typename List, typename Function>
+void ForEachInUnion(const List& a, const List& b, Function&& each)
+{
+  std::size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size())
+  {
+    if (j == b.size() || (i < a.size() && a[i] < b[j]))
+    {
+      each(a[i++], false);
+    }
+    else if (i == a.size() || b[j] < a[i])
+    {
+      each(b[j++], false);
+    }
+    else
+    {
+      each(a[i], true);
+      ++i;
+      ++j;
+    }
+  }
+}
 }
 
 #endif

@@ -664,43 +664,75 @@ std::size_t MedialEdgeCollapse::BatchLimit(std::size_t target) const
   return std::max<std::size_t>(limit, 1);
 }
 
-// Claims the vertices within two edges of a or b for the batch under way;
-// false when one of them is claimed already (claiming them all anyway, so
-// that no costlier candidate near this one joins the batch either). Members of
-// a batch are then at least five edges apart: a collapse writes within one
-// edge of its endpoints and reads within three (the fold tests around
+// The vertices within two edges of a or b: the rings of their neighbours,
+// each neighbour once (both lists are sorted; a and b are among them).
+void MedialEdgeCollapse::GatherRegion(Index a, Index b, std::vector<Index>& region) const
+{
+  region.clear();
+  ForEachInUnion(this->VertexNeighbours[a], this->VertexNeighbours[b],
+    [&](Index u, bool)
+    {
+      const auto& ring = this->VertexNeighbours[u];
+      region.insert(region.end(), ring.begin(), ring.end());
+    });
+}
+
+// Claims a candidate's region (GatherRegion) for the batch under way; false
+// when one of its vertices is claimed already (claiming them all anyway, so
+// that no costlier candidate near this one joins the batch either). Members
+// of a batch are then at least five edges apart: a collapse writes within
+// one edge of its endpoints and reads within three (the fold tests around
 // vertices its policy moves), so no member reads what another writes, and
 // the batch's result is that of any order.
-bool MedialEdgeCollapse::ClaimRegion(Index a, Index b)
+bool MedialEdgeCollapse::ClaimRegion(const std::vector<Index>& region)
 {
   // One pass: a vertex stamped since the batch began, by another claim, is
   // taken already.
   const std::uint32_t claim = ++this->ClaimStamp;
   bool free = true;
-  auto visit = [&](Index v)
+  for (Index v : region)
   {
     std::uint32_t& stamp = this->RegionStamp[v];
     free = free && (stamp < this->BatchStart || stamp == claim);
     stamp = claim;
-  };
-  auto visitRing = [&](Index u)
+  }
+  return free;
+}
+
+bool MedialEdgeCollapse::LookFurther(std::size_t count, bool gather)
+{
+  const std::size_t first = this->Looked.size();
+  const Candidate* top = nullptr;
+  while (this->Looked.size() - first < count && (top = this->Queue.TopCurrent()) != nullptr)
   {
-    for (Index w : this->VertexNeighbours[u])
+    if (top->Cost > this->Options.MaximumCost)
     {
-      visit(w);
+      this->AboveCostLimit = true;
+      break;
     }
-  };
-  // The rings of the neighbours of a and b, each neighbour once (both lists
-  // are sorted; a and b are among them).
-  ForEachInUnion(this->VertexNeighbours[a], this->VertexNeighbours[b],
-    [&](Index u, bool)
+    this->Looked.push_back(*top);
+    this->Queue.PopTop();
+  }
+  const std::size_t end = this->Looked.size();
+  if (!gather || end == first)
+  {
+    return end > first;
+  }
+  // Gathering the regions chases pointers through the neighbour lists, the
+  // dearest part of choosing a batch: done for all at once, in parallel.
+  if (this->Regions.size() < end)
+  {
+    this->Regions.resize(end);
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(first, end, 8),
+    [&](const tbb::blocked_range<std::size_t>& r)
     {
-      for (Index w : this->VertexNeighbours[u])
+      for (std::size_t k = r.begin(); k != r.end(); ++k)
       {
-        visit(w);
+        this->GatherRegion(this->Looked[k].A, this->Looked[k].B, this->Regions[k]);
       }
     });
-  return free;
+  return true;
 }
 
 // Collapses a batch member (or rejects it) and re-evaluates the edges of the
@@ -761,30 +793,39 @@ bool MedialEdgeCollapse::CollapseUntil(
       this->ClaimStamp = 0;
     }
     this->BatchStart = this->ClaimStamp + 1;
-    std::size_t taken = 0;
+    std::size_t taken = 0, next = 0;
+    this->Looked.clear();
     this->PassedOver.clear();
-    const Candidate* top = nullptr;
-    while (taken < limit && this->PassedOver.size() < LookAhead &&
-      (top = this->Queue.TopCurrent()) != nullptr)
+    this->AboveCostLimit = false;
+    while (taken < limit && this->PassedOver.size() < LookAhead)
     {
-      if (top->Cost > this->Options.MaximumCost)
+      // More candidates, as many as the last batch looked at (the rest go
+      // back to the queue).
+      if (next == this->Looked.size() &&
+        (this->AboveCostLimit ||
+          !this->LookFurther(limit == 1
+              ? 1
+              : std::min(std::max<std::size_t>(this->LookedLastTime, 8), limit + LookAhead - next),
+            limit > 1)))
       {
-        if (taken == 0)
-        {
-          this->Queue.Clear();
-        }
         break;
       }
-      // (The first candidate of a batch always finds its region free.)
-      if (this->ClaimRegion(top->A, top->B))
+      // (The first candidate of a batch always finds its region free; one
+      // taken alone need not claim it at all.)
+      if (limit == 1 || this->ClaimRegion(this->Regions[next]))
       {
-        this->Batch[taken++].Taken = *top;
+        this->Batch[taken++].Taken = this->Looked[next];
       }
       else
       {
-        this->PassedOver.push_back(*top);
+        this->PassedOver.push_back(this->Looked[next]);
       }
-      this->Queue.PopTop();
+      ++next;
+    }
+    this->LookedLastTime = next;
+    for (std::size_t k = next; k < this->Looked.size(); ++k)
+    {
+      this->Queue.Push(this->Looked[k]);
     }
     for (const Candidate& c : this->PassedOver)
     {
@@ -792,6 +833,10 @@ bool MedialEdgeCollapse::CollapseUntil(
     }
     if (taken == 0)
     {
+      if (this->AboveCostLimit)
+      {
+        this->Queue.Clear();
+      }
       break;
     }
     ++this->Counts.Batches;

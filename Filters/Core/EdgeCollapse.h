@@ -188,7 +188,13 @@ private:
   void PushAllEdges();
   bool CollapseUntil(std::size_t target, const std::function<bool(std::size_t)>& progress);
   std::size_t BatchLimit(std::size_t target) const;
-  bool ClaimRegion(Index a, Index b);
+  // The vertices within two edges of a or b (with repeats).
+  void GatherRegion(Index a, Index b, std::vector<Index>& region) const;
+  bool ClaimRegion(const std::vector<Index>& region);
+  // Takes up to `count` more current candidates off the queue for the batch
+  // under way (none above the cost limit) and gathers their regions at once.
+  // False when none is left.
+  bool LookFurther(std::size_t count, bool gather);
   void CollapseTaken(BatchItem& item, CollapseScratch& scratch);
   // Sets scratch.EulerNeutral when it holds only as an Euler-neutral collapse.
   bool LinkConditionHolds(Index a, Index b, CollapseScratch& scratch) const;
@@ -220,7 +226,10 @@ private:
   // within two edges of its endpoints: they carry the number of the claim,
   // and those claimed since BatchStart belong to the batch.
   std::vector<BatchItem> Batch;
-  std::vector<Candidate> PassedOver;
+  std::vector<Candidate> Looked, PassedOver; // taken off the queue; passed over
+  std::vector<std::vector<Index>> Regions;   // of the candidates looked at
+  std::size_t LookedLastTime = 0;
+  bool AboveCostLimit = false; // the queue's cheapest current entry costs too much
   std::vector<std::uint32_t> RegionStamp;
   std::uint32_t ClaimStamp = 0, BatchStart = 1;
   EdgeCollapseCounts Counts;

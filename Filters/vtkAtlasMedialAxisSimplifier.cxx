@@ -157,7 +157,9 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.PreserveSharpFeatures = this->PreserveSharpFeatures;
   options.InvaginatedTerm = this->InvaginatedTerm;
   options.PreventFolds = this->PreventFolds;
-  options.FringeCollapses = this->FringeCollapses;
+  options.FringeCollapses = this->FringeCollapses == FringeOn ? medialaxis::FringeCollapseMode::On
+    : this->FringeCollapses == FringeOff                      ? medialaxis::FringeCollapseMode::Off
+                                         : medialaxis::FringeCollapseMode::Automatic;
   options.EulerNeutralSpikeCollapses = this->EulerNeutralSpikeCollapses;
   options.Progress = [this](double f)
   {
@@ -191,7 +193,8 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
       { "EulerNeutralCollapses", result.EulerNeutralCollapses },
       { "SnappedVertices", result.SnappedVertices }, { "ForcedSnaps", result.ForcedSnaps },
       { "FoldingAllowedCollapses", result.FoldingAllowedCollapses },
-      { "CollapseBatches", result.Batches } })
+      { "CollapseBatches", result.Batches },
+      { "FringeCollapsesUsed", medialaxis::UsesFringeCollapses(options) ? 1u : 0u } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }

@@ -106,11 +106,15 @@ public:
 
   ///@{
   /// Let the simplifier break the link condition with collapses that keep
-  /// the Euler characteristic (see vtkAtlasMedialAxisSimplifier): removes the
-  /// fringe of thin fins along large fillets' centre lines (default off).
-  vtkSetMacro(FringeCollapses, bool);
-  vtkGetMacro(FringeCollapses, bool);
-  vtkBooleanMacro(FringeCollapses, bool);
+  /// the Euler characteristic (see vtkAtlasMedialAxisSimplifier): 0 off, 1
+  /// on, 2 automatic (default: on for organic shapes simplified to at least
+  /// 200 spheres). They remove the fringe of thin fins along large fillets'
+  /// centre lines and keep organic shapes simplified far (50K samples ->
+  /// 1,000 spheres) from losing ears and fingers.
+  vtkSetClampMacro(FringeCollapses, int, 0, 2);
+  vtkGetMacro(FringeCollapses, int);
+  vtkBooleanMacro(FringeCollapses, int);
+  void SetFringeCollapsesToAutomatic() { this->SetFringeCollapses(2); }
   ///@}
 
   ///@{
@@ -179,7 +183,7 @@ protected:
   int RandomSeed = 0;
   vtkIdType TargetNumberOfVertices = 1000;
   bool PreserveSharpFeatures = false;
-  bool FringeCollapses = false;
+  int FringeCollapses = 2; // automatic
   bool EulerNeutralSpikeCollapses = false;
   int Strategy = Structural;
   double FeatureAngle = 45.0;

@@ -547,7 +547,7 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   c.MaximumCost = o.MaximumCost;
   c.SpikeThreshold = o.SpikeThreshold;
   c.TopologyGuardVertexCount = o.TopologyGuardVertexCount;
-  c.FringeCollapses = o.FringeCollapses;
+  c.FringeCollapses = UsesFringeCollapses(o);
   c.EulerNeutralSpikeCollapses = o.EulerNeutralSpikeCollapses;
   c.StrictLinkConditionVertexCount = o.StrictLinkConditionVertexCount;
   c.StrictTopologyGuard = o.StrictTopologyGuard;
@@ -560,6 +560,20 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   return c;
 }
 } // namespace
+
+bool UsesFringeCollapses(const AtlasSimplifierOptions& o)
+{
+  switch (o.FringeCollapses)
+  {
+    case FringeCollapseMode::On:
+      return true;
+    case FringeCollapseMode::Off:
+      return false;
+    case FringeCollapseMode::Automatic:
+      break;
+  }
+  return !o.PreserveSharpFeatures && o.TargetNumberOfVertices >= o.StrictLinkConditionVertexCount;
+}
 
 AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
   const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,

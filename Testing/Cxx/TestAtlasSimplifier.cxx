@@ -201,7 +201,8 @@ TEST(AtlasSimplifier, FringeCollapsesCleanLargeFillets)
   std::size_t boundary[2];
   for (int fringe = 0; fringe < 2; ++fringe)
   {
-    const SimplifiedRun run = Simplify(box, 50000, 2000, true, true, true, fringe == 1);
+    const SimplifiedRun run = Simplify(box, 50000, 2000, true, true, true,
+      fringe == 1 ? FringeCollapseMode::On : FringeCollapseMode::Off);
     const MedialMesh& m = run.Result.Medial.Mesh;
     std::map<std::array<Index, 2>, int> uses;
     for (const auto& t : m.Faces)

@@ -38,7 +38,8 @@ Detection Detect(const TriangleMesh& part, std::size_t samples, std::size_t targ
   bool fringeCollapses = false, const FilletDetectorOptions& options = FilletDetectorOptions())
 {
   Detection d;
-  d.Run = test::Simplify(part, samples, target, true, true, true, fringeCollapses);
+  d.Run = test::Simplify(part, samples, target, true, true, true,
+    fringeCollapses ? FringeCollapseMode::On : FringeCollapseMode::Off);
   const AtlasMedialMesh& m = d.Run.Result.Medial;
   d.Fillets = DetectFillets(part, m.Mesh, m.AtlasOffsets, m.AtlasSites, d.Run.Rvd.PolygonSite,
     d.Run.Rvd.PolygonTriangle, options);

@@ -154,7 +154,8 @@ inline SimplifiedRun InitialMedialAxis(
 }
 
 inline SimplifiedRun Simplify(const TriangleMesh& surface, std::size_t samples, std::size_t target,
-  bool cad, bool concaveFiltering = true, bool invaginatedTerm = true, bool fringeCollapses = false)
+  bool cad, bool concaveFiltering = true, bool invaginatedTerm = true,
+  FringeCollapseMode fringeCollapses = FringeCollapseMode::Automatic)
 {
   SimplifiedRun run = InitialMedialAxis(surface, samples, concaveFiltering);
   AtlasSimplifierOptions options;

@@ -212,6 +212,22 @@ class PipelineTest(unittest.TestCase):
         self.assertAlmostEqual(total, stages, places=12)
         self.assertEqual(fields.GetArray("Sites").GetValue(0), 3000)
         self.assertEqual(progress[-1], 1.0)
+        # Fringe collapses: automatic by default, which leaves them off for
+        # CAD parts and turns them on for organic shapes (targets of 200+).
+        self.assertEqual(structural.GetFringeCollapses(), 2)
+        self.assertEqual(fields.GetArray("FringeCollapsesUsed").GetValue(0), 0)
+        organic = medialaxis.vtkStructuralMedialAxis()
+        organic.SetInputConnection(shape.GetOutputPort())
+        organic.SetPresetToOrganic()
+        organic.SetNumberOfSamples(3000)
+        organic.SetTargetNumberOfVertices(300)
+        organic.Update()
+        used = organic.GetOutput(0).GetFieldData().GetArray("FringeCollapsesUsed")
+        self.assertEqual(used.GetValue(0), 1)
+        organic.FringeCollapsesOff()
+        organic.Update()
+        used = organic.GetOutput(0).GetFieldData().GetArray("FringeCollapsesUsed")
+        self.assertEqual(used.GetValue(0), 0)
         # The whole Atlas of sphere 0: cells of the correspondence output.
         atlas = medialaxis.vtkExtractMedialAtlas()
         atlas.SetInputConnection(0, structural.GetOutputPort(0))

@@ -4,6 +4,7 @@
 #include "MedialMesh.h"
 #include "MedialMeshQuality.h"
 #include "Screenshot.h"
+#include "vtkAtlasMedialAxisSimplifier.h"
 #include "vtkErrorEventText.h"
 #include "vtkFilletDetector.h"
 #include "vtkMedialAxisWriter.h"
@@ -122,7 +123,7 @@ struct Options
   int Sharp = -1; // -1: from the preset
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
        Fillets = false, SpikeCollapses = false, QMat = false;
-  int FringeCollapses = 2; // 0 off, 1 on, 2 automatic
+  int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;
   int Seed = 0, Threads = 0;
@@ -266,11 +267,11 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     }
     else if (arg == "--fringe-collapses")
     {
-      o.FringeCollapses = 1;
+      o.FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeOn;
     }
     else if (arg == "--no-fringe-collapses")
     {
-      o.FringeCollapses = 0;
+      o.FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeOff;
     }
     else if (arg == "--spike-collapses")
     {
@@ -659,9 +660,9 @@ int main(int argc, char** argv)
          << ", \"feature_angle\": " << o.FeatureAngle
          << ", \"feature_normal_filtering\": " << o.FeatureNormalFiltering
          << ", \"fringe_collapses\": "
-         << (o.FringeCollapses == 2      ? "\"automatic\""
-                : o.FringeCollapses == 1 ? "\"on\""
-                                         : "\"off\"")
+         << (o.FringeCollapses == vtkAtlasMedialAxisSimplifier::FringeAutomatic ? "\"automatic\""
+                : o.FringeCollapses == vtkAtlasMedialAxisSimplifier::FringeOn   ? "\"on\""
+                                                                                : "\"off\"")
          << ", \"euler_neutral_spike_collapses\": "
          << (structural->GetEulerNeutralSpikeCollapses() ? "true" : "false")
          << ", \"strategy\": " << (o.QMat ? "\"qmat\"" : "\"structural\"")

@@ -24,10 +24,11 @@
  * TopologyGuardVertexCount vertices the link condition also guards the
  * topology; collapses that break it but keep the Euler characteristic are
  * allowed above 200 vertices by FringeCollapses (automatic by default: for
- * organic shapes; field data FringeCollapsesUsed says whether they were). With
- * PreserveSharpFeatures, feature vertices (Atlas on a sharp convex edge, none on a concave one) are
- * first snapped to their edge with radius 0 and stay there; snaps that fold or flatten a triangle
- * are made last and the collapses around them first (field data ForcedSnaps).
+ * organic shapes; field data FringeCollapsesUsed says whether they were).
+ * With PreserveSharpFeatures, feature vertices (Atlas on a sharp convex
+ * edge, none on a concave one) are first snapped to their edge with radius 0
+ * and stay there; snaps that fold or flatten a triangle are made last and
+ * the collapses around them first (field data ForcedSnaps).
  *
  * The cheapest collapses whose edges lie at least five edges apart are made
  * at once, in parallel, in batches of up to 64 (field data CollapseBatches):

@@ -35,6 +35,7 @@
 #ifndef vtkStructuralMedialAxis_h
 #define vtkStructuralMedialAxis_h
 
+#include "vtkAtlasMedialAxisSimplifier.h" // for its FringeCollapseType values
 #include "vtkMedialAxisFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
@@ -106,15 +107,19 @@ public:
 
   ///@{
   /// Let the simplifier break the link condition with collapses that keep
-  /// the Euler characteristic (see vtkAtlasMedialAxisSimplifier): 0 off, 1
-  /// on, 2 automatic (default: on for organic shapes simplified to at least
-  /// 200 spheres). They remove the fringe of thin fins along large fillets'
-  /// centre lines and keep organic shapes simplified far (50K samples ->
-  /// 1,000 spheres) from losing ears and fingers.
-  vtkSetClampMacro(FringeCollapses, int, 0, 2);
+  /// the Euler characteristic (see vtkAtlasMedialAxisSimplifier, whose
+  /// FringeOff / FringeOn / FringeAutomatic values this takes): automatic by
+  /// default, on for organic shapes simplified to at least 200 spheres. They remove the fringe of
+  /// thin fins along large fillets' centre lines and keep organic shapes simplified far (50K
+  /// samples -> 1,000 spheres) from losing ears and fingers.
+  vtkSetClampMacro(FringeCollapses, int, vtkAtlasMedialAxisSimplifier::FringeOff,
+    vtkAtlasMedialAxisSimplifier::FringeAutomatic);
   vtkGetMacro(FringeCollapses, int);
   vtkBooleanMacro(FringeCollapses, int);
-  void SetFringeCollapsesToAutomatic() { this->SetFringeCollapses(2); }
+  void SetFringeCollapsesToAutomatic()
+  {
+    this->SetFringeCollapses(vtkAtlasMedialAxisSimplifier::FringeAutomatic);
+  }
   ///@}
 
   ///@{
@@ -183,7 +188,7 @@ protected:
   int RandomSeed = 0;
   vtkIdType TargetNumberOfVertices = 1000;
   bool PreserveSharpFeatures = false;
-  int FringeCollapses = 2; // automatic
+  int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   bool EulerNeutralSpikeCollapses = false;
   int Strategy = Structural;
   double FeatureAngle = 45.0;

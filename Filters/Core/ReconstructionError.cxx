@@ -60,6 +60,21 @@ public:
     }
   }
   bool Empty() const { return this->Cdf.empty(); }
+  /// Pick(u) for u >= the value that gave `from`: a walk forward, for
+  /// increasing values (reads neighbouring entries instead of searching).
+  std::size_t PickFrom(double u, std::size_t from) const
+  {
+    const double v = u * this->Cdf.back();
+    if (from > 0 && this->Cdf[from - 1] > v)
+    {
+      return this->Pick(u);
+    }
+    while (from + 1 < this->Cdf.size() && this->Cdf[from] <= v)
+    {
+      ++from;
+    }
+    return from;
+  }
   std::size_t Pick(double u) const
   {
     const double v = u * this->Cdf.back();
@@ -686,6 +701,8 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   std::vector<Point3> batchPoints;
   std::vector<std::uint32_t> batchPieces;
   std::vector<std::uint8_t> keep;
+  std::vector<double> batchKeys;
+  std::vector<std::uint32_t> accepted;
   while (result.EnvelopeSamples.size() < target && drawn < limit)
   {
     const std::size_t have = result.EnvelopeSamples.size();
@@ -696,15 +713,23 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
     batchPoints.resize(batch);
     batchPieces.resize(batch);
     keep.assign(batch, 0);
+    // Stratified over the pieces' cumulative area: candidate i of the batch
+    // takes u in [i, i + 1) / batch, so that a range of candidates walks
+    // through the pieces in order (a random pick per candidate was mostly
+    // cache misses). Each candidate is still uniform on the pieces.
+    batchKeys.resize(batch);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch, 1024),
       [&](const tbb::blocked_range<std::size_t>& r)
       {
+        std::size_t piece = 0;
         for (std::size_t i = r.begin(); i < r.end(); ++i)
         {
           Random rng = SampleRandom(envelopeSeed, drawn + i);
-          const std::size_t piece = pieces.Cdf.Pick(rng.Uniform());
+          const double u = std::min((double(i) + rng.Uniform()) / double(batch), 1.0);
+          piece = i == r.begin() ? pieces.Cdf.Pick(u) : pieces.Cdf.PickFrom(u, piece);
           batchPieces[i] = static_cast<std::uint32_t>(piece);
           batchPoints[i] = SamplePiece(envelope, pieces.Pieces[piece], rng);
+          batchKeys[i] = rng.Uniform();
         }
       });
     // Tested along a Morton curve: consecutive candidates are close, so a
@@ -729,15 +754,31 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
           hint = keep[i] ? hint : by;
         }
       });
-    for (std::size_t i = 0; i < batch && result.EnvelopeSamples.size() < target; ++i)
+    // Kept candidates beyond the target: a random subset (by key), not the
+    // first ones, which would favour the pieces at the start of the order.
+    accepted.clear();
+    for (std::size_t i = 0; i < batch; ++i)
     {
-      result.EnvelopeCandidates = drawn + i + 1;
       if (keep[i])
       {
-        result.EnvelopeSamples.push_back(batchPoints[i]);
-        result.EnvelopeSamplePrimitive.push_back(pieces.Pieces[batchPieces[i]].Ref);
+        accepted.push_back(static_cast<std::uint32_t>(i));
       }
     }
+    const std::size_t wanted = target - result.EnvelopeSamples.size();
+    if (accepted.size() > wanted)
+    {
+      auto byKey = [&](std::uint32_t a, std::uint32_t b)
+      { return batchKeys[a] < batchKeys[b] || (batchKeys[a] == batchKeys[b] && a < b); };
+      std::nth_element(accepted.begin(), accepted.begin() + wanted, accepted.end(), byKey);
+      accepted.resize(wanted);
+      std::sort(accepted.begin(), accepted.end());
+    }
+    for (const std::uint32_t i : accepted)
+    {
+      result.EnvelopeSamples.push_back(batchPoints[i]);
+      result.EnvelopeSamplePrimitive.push_back(pieces.Pieces[batchPieces[i]].Ref);
+    }
+    result.EnvelopeCandidates = drawn + batch;
     drawn += batch;
     if (options.Progress &&
       !options.Progress(0.6 + 0.2 * double(result.EnvelopeSamples.size()) / double(target)))

@@ -376,6 +376,30 @@ TEST(ReconstructionError, SphereAgainstItsOwnMesh)
   }
 }
 
+// Envelope samples are area-uniform on the union's boundary: on two separate
+// balls of radii 1 and sqrt(2), a third of them on the first. (Candidates are
+// drawn in order over the primitives' pieces: keeping the first ones found
+// instead of a random subset of them would favour the first ball.)
+TEST(ReconstructionError, EnvelopeSamplesAreAreaUniform)
+{
+  MedialMesh m;
+  m.Centers = { { 0, 0, 0 }, { 4, 0, 0 } };
+  m.Radii = { 1.0, std::sqrt(2.0) };
+  const MedialEnvelope envelope(m);
+  const ReconstructionErrorResult r = ComputeReconstructionError(MakeSphere(1.0, 16), envelope);
+  ASSERT_EQ(r.EnvelopeSamples.size(), 100000u);
+  std::size_t first = 0;
+  for (std::size_t i = 0; i < r.EnvelopeSamples.size(); ++i)
+  {
+    first += r.EnvelopeSamplePrimitive[i].Id == 0 ? 1 : 0;
+    // Every sample on its ball's sphere.
+    const Index v = r.EnvelopeSamplePrimitive[i].Id;
+    EXPECT_NEAR(Norm(r.EnvelopeSamples[i] - m.Centers[v]), m.Radii[v], 1e-12);
+  }
+  // A third, within about 3 standard deviations (0.0015 each).
+  EXPECT_NEAR(double(first) / double(r.EnvelopeSamples.size()), 1.0 / 3.0, 0.005);
+}
+
 TEST(ReconstructionError, CapsuleBelowATenthPercent)
 {
   const TriangleMesh capsule = MakeCapsule(0.5, 2.0, 32);

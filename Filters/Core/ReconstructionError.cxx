@@ -160,8 +160,10 @@ double Lap(std::chrono::steady_clock::time_point& start)
 
 // Burial tests of pieces only cull: past this many primitives evaluated in
 // the tree, a piece is kept (its candidates get the exact test), which costs
-// less than proving an exposed piece unburied.
-constexpr std::size_t BurialSearchItems = 32;
+// less than proving an exposed piece unburied. Most pieces tested are not
+// buried (bunny, 5,000 spheres: 244K of 400K), so the limit is low: 8 keeps
+// 5% more candidates than 32 but the pieces take a quarter less time.
+constexpr std::size_t BurialSearchItems = 8;
 
 struct DirectionCell
 {

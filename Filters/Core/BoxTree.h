@@ -93,6 +93,27 @@ public:
   template <typename BoundFunction, typename VisitFunction>
   void SearchPositions(BoundFunction&& bound, VisitFunction&& visit, const double& cutoff) const
   {
+    this->SearchLeaves(
+      bound,
+      [&](const Node& leaf)
+      {
+        for (std::uint32_t i = leaf.Begin; i < leaf.Begin + leaf.Count; ++i)
+        {
+          if (visit(i))
+          {
+            return true;
+          }
+        }
+        return false;
+      },
+      cutoff);
+  }
+
+  /// The same, leaf by leaf: `visitLeaf(leaf)` looks at the positions
+  /// [leaf.Begin, leaf.Begin + leaf.Count) itself and returns true to stop.
+  template <typename BoundFunction, typename LeafFunction>
+  void SearchLeaves(BoundFunction&& bound, LeafFunction&& visitLeaf, const double& cutoff) const
+  {
     if (this->Nodes.empty())
     {
       return;
@@ -116,12 +137,9 @@ public:
       const Node& n = nodes[e.Node];
       if (n.Count > 0)
       {
-        for (std::uint32_t i = n.Begin; i < n.Begin + n.Count; ++i)
+        if (visitLeaf(n))
         {
-          if (visit(i))
-          {
-            return;
-          }
+          return;
         }
         continue;
       }
@@ -136,6 +154,21 @@ public:
       {
         stack[top++] = { n.Begin, b0 };
         stack[top++] = { n.Begin + 1, b1 };
+      }
+    }
+  }
+
+  /// Orders the items inside every leaf by key(item), stably (e.g. to group
+  /// them by kind); the hierarchy does not change.
+  template <typename KeyFunction>
+  void SortLeafItems(KeyFunction&& key)
+  {
+    for (const Node& n : this->Nodes)
+    {
+      if (n.Count > 0)
+      {
+        std::stable_sort(this->Items.begin() + n.Begin, this->Items.begin() + n.Begin + n.Count,
+          [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
       }
     }
   }

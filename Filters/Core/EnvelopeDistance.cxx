@@ -229,6 +229,8 @@ MedialEnvelope::MedialEnvelope(const MedialMesh& mesh, bool accelerate)
   if (this->Accelerate)
   {
     this->Tree.Build(this->ActiveBallBoxes, &maxRadius, EnvelopeLeafSize);
+    this->Tree.SortLeafItems(
+      [&](std::uint32_t a) { return this->Active[a].Kind == PrimitiveKind::Slab ? 1 : 0; });
     std::vector<Compact> ordered(this->Records.size());
     for (std::size_t i = 0; i < ordered.size(); ++i)
     {
@@ -282,6 +284,48 @@ MedialEnvelope::MedialEnvelope(const MedialMesh& mesh, bool accelerate)
       }
     }
     this->BuildSheetPlanes();
+    this->BuildLeafParts();
+  }
+}
+
+void MedialEnvelope::BuildLeafParts()
+{
+  const auto& nodes = this->Tree.GetNodes();
+  const auto& items = this->Tree.GetItems();
+  this->Leaves.assign(nodes.size(), LeafParts());
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+  {
+    const BoxTree::Node& node = nodes[n];
+    LeafParts& parts = this->Leaves[n];
+    for (std::uint32_t i = node.Begin; i < node.Begin + node.Count; ++i)
+    {
+      const PrimitiveRef& ref = this->Active[items[i]];
+      if (ref.Kind == PrimitiveKind::Sphere)
+      {
+        parts.Balls.Extend(this->SphereList[ref.Id]);
+        ++parts.Split;
+      }
+      else if (ref.Kind == PrimitiveKind::Cone)
+      {
+        for (Index v : this->Edges[ref.Id])
+        {
+          parts.Balls.Extend(this->SphereList[v]);
+        }
+        ++parts.Split;
+      }
+      else
+      {
+        const SlabPrimitive& slab = this->SlabList[ref.Id];
+        for (int k = 0; k < 3; ++k)
+        {
+          parts.Regions.Extend(SpherePrimitive{ slab.C[k], 0.0 });
+          for (const Point3& normal : slab.Normals)
+          {
+            parts.Regions.Extend(SpherePrimitive{ slab.C[k] + slab.R[k] * normal, 0.0 });
+          }
+        }
+      }
+    }
   }
 }
 
@@ -540,6 +584,45 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
   return best;
 }
 
+template <typename Visit>
+void MedialEnvelope::SearchBurial(const Point3& p, double tolerance, Visit&& visit) const
+{
+  const double cutoff = -tolerance;
+  const BoxTree::Node* first = this->Tree.GetNodes().data();
+  const SignedBound bound(p, first, this->NodeDops.data(), this->NodePlanes.data());
+  this->Tree.SearchLeaves(
+    bound,
+    [&](const BoxTree::Node& leaf)
+    {
+      const LeafParts& parts = this->Leaves[&leaf - first];
+      const std::uint32_t split = leaf.Begin + parts.Split, end = leaf.Begin + leaf.Count;
+      if (split > leaf.Begin && parts.Balls.Bound(bound.T) < cutoff)
+      {
+        for (std::uint32_t i = leaf.Begin; i < split; ++i)
+        {
+          if (visit(i))
+          {
+            return true;
+          }
+        }
+      }
+      // A point strictly buried by a slab interior is in its region, maybe
+      // within rounding of the region's side: hence +tolerance.
+      if (end > split && parts.Regions.Bound(bound.T) < tolerance)
+      {
+        for (std::uint32_t i = split; i < end; ++i)
+        {
+          if (visit(i))
+          {
+            return true;
+          }
+        }
+      }
+      return false;
+    },
+    cutoff);
+}
+
 bool MedialEnvelope::StrictlyInside(const Point3& p, double tolerance) const
 {
   const double cutoff = -tolerance;
@@ -547,14 +630,12 @@ bool MedialEnvelope::StrictlyInside(const Point3& p, double tolerance) const
   if (this->Accelerate)
   {
     const Compact* records = this->Records.data();
-    this->Tree.SearchPositions(
-      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data(), this->NodePlanes.data()),
+    this->SearchBurial(p, tolerance,
       [&](std::uint32_t position)
       {
         found = CompactValue(records[position].D, records[position].Kind, p) < cutoff;
         return found;
-      },
-      cutoff);
+      });
   }
   else
   {
@@ -611,8 +692,7 @@ std::uint32_t MedialEnvelope::FindBurying(const Point3& p, double tolerance, con
   if (this->Accelerate)
   {
     std::size_t evaluated = 0;
-    this->Tree.SearchPositions(
-      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data(), this->NodePlanes.data()),
+    this->SearchBurial(p, tolerance,
       [&](std::uint32_t position)
       {
         if (buries(position))
@@ -621,8 +701,7 @@ std::uint32_t MedialEnvelope::FindBurying(const Point3& p, double tolerance, con
           return true;
         }
         return ++evaluated >= maxItems;
-      },
-      cutoff);
+      });
   }
   else
   {

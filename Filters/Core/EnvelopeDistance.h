@@ -89,6 +89,7 @@ public:
         this->Hi[k] = std::max(this->Hi[k], t + s.Radius);
       }
     }
+    void Extend(const Point3& p) { this->Extend(SpherePrimitive{ p, 0.0 }); }
     void Extend(const Dop& d)
     {
       for (int k = 0; k < K; ++k)

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -18,17 +19,27 @@ namespace medialaxis
 /// either has changed.
 ///
 /// Every collapse re-evaluates the merged vertex's edges, so stale entries
-/// pile up, and popping through a large heap of fat entries was the single
-/// biggest cost of simplification. Hence, written by hand rather than with
-/// std::priority_queue or boost::heap: the heap holds 16-byte keys (cost and
-/// the slot of the candidate's record), is 4-ary (one cache line holds all
-/// children of a node, half the depth of a binary heap), and stale entries
-/// are dropped in bulk (filter + linear heapify) whenever the pushes since
-/// the last clean-up exceed the size it left, which keeps the heap within
-/// about twice the number of live candidates at amortised O(1) per push.
+/// pile up, and popping through a large heap was the biggest sequential cost
+/// of simplification (cache misses on every level below the first few, for
+/// half a million initial edges). Hence, written by hand rather than with
+/// std::priority_queue or boost::heap, as a bucketed heap:
+///  - entries are kept in buckets by cost range, with bounds at quantiles of
+///    the costs (a few thousand entries each); only the cheapest bucket is a
+///    heap (4-ary: one cache line holds all children of a node), small
+///    enough to stay in cache; the others are unordered arrays that a push
+///    appends to;
+///  - when the heap runs out, the next bucket is filtered of stale entries
+///    and heapified; the last bucket (no upper bound: costs rise as the
+///    simplification goes on) is split at new quantiles first when large;
+///  - stale entries are also dropped in bulk whenever the pushes since the
+///    last clean-up exceed the size it left, which keeps the queue within
+///    about twice the number of live candidates at amortised O(1) per push.
+/// The heap holds every entry cheaper than its bucket's upper bound, and
+/// the other buckets only entries at least as dear, so its top is the
+/// cheapest entry of the queue.
 ///
 /// Order: cheapest first; equal costs by (A, B), then by versions, so the
-/// pop sequence depends on the pushed entries alone, not on the heap layout.
+/// pop sequence depends on the pushed entries alone, not on the layout.
 ///
 /// `IsCurrent` tells whether an entry still describes the mesh: a functor
 /// type rather than std::function, since it runs on every entry popped.
@@ -47,36 +58,28 @@ public:
   explicit CollapseQueue(IsCurrent isCurrent)
     : Current(std::move(isCurrent))
   {
+    this->Clear();
   }
 
-  /// Pushes many entries at once: a linear heapify rather than one sift-up
-  /// each.
+  /// Pushes many entries at once, into buckets at quantiles of their costs.
   void PushAll(const std::vector<Entry>& entries)
   {
-    for (const Entry& entry : entries)
-    {
-      this->Entries.push_back(entry);
-      this->Heap.push_back({ entry.Cost, static_cast<std::uint32_t>(this->Entries.size() - 1) });
-    }
-    this->Heapify();
+    std::vector<Entry> all;
+    all.reserve(this->Size() + entries.size());
+    this->MoveAllTo(all);
+    all.insert(all.end(), entries.begin(), entries.end());
+    const double lowest = -std::numeric_limits<double>::infinity();
+    std::vector<double> bounds = QuantileBounds(all, lowest);
+    this->Stored = all.size();
+    this->Spread(std::move(all), std::move(bounds), lowest);
+    this->SizeAfterCleanUp = this->Stored;
+    this->PushesSinceCleanUp = 0;
   }
 
   void Push(const Entry& entry)
   {
-    std::uint32_t slot;
-    if (this->FreeSlots.empty())
-    {
-      slot = static_cast<std::uint32_t>(this->Entries.size());
-      this->Entries.push_back(entry);
-    }
-    else
-    {
-      slot = this->FreeSlots.back();
-      this->FreeSlots.pop_back();
-      this->Entries[slot] = entry;
-    }
-    this->Heap.push_back({ entry.Cost, slot });
-    this->SiftUp(this->Heap.size() - 1);
+    this->Place(entry);
+    ++this->Stored;
     if (++this->PushesSinceCleanUp > std::max<std::size_t>(this->SizeAfterCleanUp, 4096))
     {
       this->DropStale();
@@ -87,24 +90,29 @@ public:
   /// when none is left; valid until the next push.
   const Entry* TopCurrent()
   {
-    while (!this->Heap.empty())
+    for (;;)
     {
-      const std::uint32_t slot = this->Heap.front().Slot;
-      if (this->Current(this->Entries[slot]))
+      while (!this->Heap.empty())
       {
-        return &this->Entries[slot];
+        if (this->Current(this->Heap.front()))
+        {
+          return &this->Heap.front();
+        }
+        this->PopTop();
       }
-      this->PopTop();
+      if (!this->OpenNextBucket())
+      {
+        return nullptr;
+      }
     }
-    return nullptr;
   }
 
-  /// Removes the cheapest entry, current or not.
+  /// Removes the cheapest entry, current or not (TopCurrent first).
   void PopTop()
   {
-    this->FreeSlots.push_back(this->Heap.front().Slot);
     this->Heap.front() = this->Heap.back();
     this->Heap.pop_back();
+    --this->Stored;
     if (!this->Heap.empty())
     {
       this->SiftDown(0);
@@ -114,52 +122,50 @@ public:
   void Clear()
   {
     this->Heap.clear();
-    this->Entries.clear();
-    this->FreeSlots.clear();
-    this->PushesSinceCleanUp = this->SizeAfterCleanUp = 0;
+    this->Buckets.assign(1, std::vector<Entry>());
+    this->Bounds.clear();
+    this->NextBucket = 0;
+    this->HeapLimit = -std::numeric_limits<double>::infinity();
+    this->Stored = this->PushesSinceCleanUp = this->SizeAfterCleanUp = 0;
   }
 
-  std::size_t Size() const { return this->Heap.size(); }
+  /// Entries held, stale ones included.
+  std::size_t Size() const { return this->Stored; }
 
 private:
-  struct Key
-  {
-    double Cost;
-    std::uint32_t Slot;
-  };
   static constexpr std::size_t Arity = 4;
+  // Entries per bucket when costs are split at quantiles.
+  static constexpr std::size_t BucketSize = 4096;
 
-  // True when `x` is popped before `y`.
-  bool Before(const Key& x, const Key& y) const
+  // True when `p` is popped before `q`.
+  static bool Before(const Entry& p, const Entry& q)
   {
-    if (x.Cost != y.Cost)
+    if (p.Cost != q.Cost)
     {
-      return x.Cost < y.Cost;
+      return p.Cost < q.Cost;
     }
-    const Entry& p = this->Entries[x.Slot];
-    const Entry& q = this->Entries[y.Slot];
     return std::tie(p.A, p.B, p.VersionA, p.VersionB) < std::tie(q.A, q.B, q.VersionA, q.VersionB);
   }
 
   void SiftUp(std::size_t i)
   {
-    const Key key = this->Heap[i];
+    const Entry entry = this->Heap[i];
     while (i > 0)
     {
       const std::size_t parent = (i - 1) / Arity;
-      if (!this->Before(key, this->Heap[parent]))
+      if (!Before(entry, this->Heap[parent]))
       {
         break;
       }
       this->Heap[i] = this->Heap[parent];
       i = parent;
     }
-    this->Heap[i] = key;
+    this->Heap[i] = entry;
   }
 
   void SiftDown(std::size_t i)
   {
-    const Key key = this->Heap[i];
+    const Entry entry = this->Heap[i];
     const std::size_t n = this->Heap.size();
     for (;;)
     {
@@ -171,34 +177,16 @@ private:
       std::size_t best = first;
       for (std::size_t c = first + 1; c < std::min(first + Arity, n); ++c)
       {
-        best = this->Before(this->Heap[c], this->Heap[best]) ? c : best;
+        best = Before(this->Heap[c], this->Heap[best]) ? c : best;
       }
-      if (!this->Before(this->Heap[best], key))
+      if (!Before(this->Heap[best], entry))
       {
         break;
       }
       this->Heap[i] = this->Heap[best];
       i = best;
     }
-    this->Heap[i] = key;
-  }
-
-  void DropStale()
-  {
-    std::size_t kept = 0;
-    for (const Key& key : this->Heap)
-    {
-      if (this->Current(this->Entries[key.Slot]))
-      {
-        this->Heap[kept++] = key;
-      }
-      else
-      {
-        this->FreeSlots.push_back(key.Slot);
-      }
-    }
-    this->Heap.resize(kept);
-    this->Heapify();
+    this->Heap[i] = entry;
   }
 
   void Heapify()
@@ -211,14 +199,140 @@ private:
         this->SiftDown(i);
       }
     }
-    this->SizeAfterCleanUp = n;
+  }
+
+  // Removes the stale entries of `list`, keeping the order of the others.
+  std::size_t Filter(std::vector<Entry>& list)
+  {
+    const auto end = std::remove_if(
+      list.begin(), list.end(), [this](const Entry& e) { return !this->Current(e); });
+    const std::size_t dropped = list.end() - end;
+    list.erase(end, list.end());
+    return dropped;
+  }
+
+  // Makes the next non-empty bucket the heap; false when none is left. The
+  // last bucket is split first when large.
+  bool OpenNextBucket()
+  {
+    while (this->NextBucket < this->Buckets.size())
+    {
+      const std::size_t b = this->NextBucket++;
+      std::vector<Entry>& bucket = this->Buckets[b];
+      this->Stored -= this->Filter(bucket);
+      if (b == this->Bounds.size() && bucket.size() > 2 * BucketSize)
+      {
+        const double lower = b > 0 ? this->Bounds[b - 1] : this->HeapLimit;
+        std::vector<double> bounds = QuantileBounds(bucket, lower);
+        if (!bounds.empty())
+        {
+          std::vector<Entry> all = std::move(bucket);
+          this->Spread(std::move(all), std::move(bounds), lower);
+          continue;
+        }
+      }
+      this->HeapLimit =
+        b < this->Bounds.size() ? this->Bounds[b] : std::numeric_limits<double>::infinity();
+      if (!bucket.empty())
+      {
+        this->Heap = std::move(bucket);
+        bucket = std::vector<Entry>();
+        this->Heapify();
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // Bucket bounds above `lower` at quantiles of the costs of `list` (of a
+  // regular sample of them), BucketSize entries apart; none for a short list.
+  static std::vector<double> QuantileBounds(const std::vector<Entry>& list, double lower)
+  {
+    std::vector<double> sample, bounds;
+    const std::size_t buckets = list.size() / BucketSize;
+    if (buckets < 2)
+    {
+      return bounds;
+    }
+    for (std::size_t i = 0; i < list.size(); i += BucketSize / 16)
+    {
+      sample.push_back(list[i].Cost);
+    }
+    std::sort(sample.begin(), sample.end());
+    for (std::size_t k = 1; k < buckets; ++k)
+    {
+      const double bound = sample[k * sample.size() / buckets];
+      if (bound > lower && (bounds.empty() || bound > bounds.back()))
+      {
+        bounds.push_back(bound);
+      }
+    }
+    return bounds;
+  }
+
+  // Replaces the (empty) buckets with `all` split at `bounds`; every cost is
+  // at least `lower`, the heap's limit from now on (the heap is empty).
+  void Spread(std::vector<Entry> all, std::vector<double> bounds, double lower)
+  {
+    this->Bounds = std::move(bounds);
+    this->Buckets.assign(this->Bounds.size() + 1, std::vector<Entry>());
+    this->NextBucket = 0;
+    this->HeapLimit = lower;
+    for (const Entry& e : all)
+    {
+      this->Place(e);
+    }
+  }
+
+  // Into the heap when cheaper than its limit, else into the first bucket
+  // whose upper bound exceeds the cost (the last one has none).
+  void Place(const Entry& entry)
+  {
+    if (entry.Cost < this->HeapLimit)
+    {
+      this->Heap.push_back(entry);
+      this->SiftUp(this->Heap.size() - 1);
+    }
+    else
+    {
+      const auto bound =
+        std::upper_bound(this->Bounds.begin() + this->NextBucket, this->Bounds.end(), entry.Cost);
+      this->Buckets[bound - this->Bounds.begin()].push_back(entry);
+    }
+  }
+
+  // Moves every entry (heap and buckets) to `out` and empties the queue.
+  void MoveAllTo(std::vector<Entry>& out)
+  {
+    out.insert(out.end(), this->Heap.begin(), this->Heap.end());
+    for (std::size_t b = this->NextBucket; b < this->Buckets.size(); ++b)
+    {
+      out.insert(out.end(), this->Buckets[b].begin(), this->Buckets[b].end());
+    }
+    this->Clear();
+  }
+
+  void DropStale()
+  {
+    this->Stored -= this->Filter(this->Heap);
+    this->Heapify();
+    for (std::size_t b = this->NextBucket; b < this->Buckets.size(); ++b)
+    {
+      this->Stored -= this->Filter(this->Buckets[b]);
+    }
+    this->SizeAfterCleanUp = this->Stored;
     this->PushesSinceCleanUp = 0;
   }
 
   IsCurrent Current;
-  std::vector<Key> Heap;
-  std::vector<Entry> Entries; // by slot
-  std::vector<std::uint32_t> FreeSlots;
+  std::vector<Entry> Heap; // entries cheaper than HeapLimit
+  double HeapLimit = -std::numeric_limits<double>::infinity();
+  // Bucket b (from NextBucket on) holds costs in [Bounds[b - 1], Bounds[b]);
+  // the last one, Buckets[Bounds.size()], has no upper bound.
+  std::vector<std::vector<Entry>> Buckets;
+  std::vector<double> Bounds;
+  std::size_t NextBucket = 0;
+  std::size_t Stored = 0;
   std::size_t PushesSinceCleanUp = 0;
   std::size_t SizeAfterCleanUp = 0;
 };

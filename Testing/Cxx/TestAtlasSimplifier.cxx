@@ -4,6 +4,7 @@
 #include "AnalyticShapes.h"
 #include "AtlasSimplifier.h"
 #include "BlueNoiseSampler.h"
+#include "CollapseQueue.h"
 #include "MedialMeshQuality.h"
 #include "Parallel.h"
 #include "Random.h"
@@ -37,6 +38,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <tuple>
 
 using namespace medialaxis;
 using medialaxis::test::SimplifiedRun;
@@ -616,4 +618,104 @@ TEST(SphereQuadric, SolveMatchesEigenLdlt)
   CompareWithReference<3>(2, false);
   CompareWithReference<2>(4, true);
   CompareWithReference<1>(1, true);
+}
+
+namespace
+{
+// Current while both endpoints keep the versions recorded in the entry.
+struct EndpointsUnchanged
+{
+  const std::vector<std::uint32_t>* Version;
+  template <typename Entry>
+  bool operator()(const Entry& e) const
+  {
+    return (*this->Version)[e.A] == e.VersionA && (*this->Version)[e.B] == e.VersionB;
+  }
+};
+}
+
+// The bucketed queue pops exactly what a plain ordered set of the current
+// entries gives first, through bulk loading, pushes below the open bucket,
+// rising costs that outgrow the last bucket (and get split), equal costs,
+// stale entries and clean-ups.
+TEST(CollapseQueue, PopsTheCheapestCurrentEntryInOrder)
+{
+  std::vector<std::uint32_t> version(20000, 0);
+  using Queue = CollapseQueue<int, EndpointsUnchanged>;
+  using Entry = Queue::Entry;
+  auto before = [](const Entry& p, const Entry& q)
+  {
+    return std::tie(p.Cost, p.A, p.B, p.VersionA, p.VersionB) <
+      std::tie(q.Cost, q.A, q.B, q.VersionA, q.VersionB);
+  };
+  std::multiset<Entry, decltype(before)> reference(before);
+  Queue queue(EndpointsUnchanged{ &version });
+  Random rng(7);
+  auto make = [&](double cost)
+  {
+    const Index a = static_cast<Index>(rng.Next() % version.size());
+    const Index b = static_cast<Index>(rng.Next() % version.size());
+    // Coarse costs: many ties, broken by the endpoints and versions.
+    return Entry{ std::floor(cost * 64.0) / 64.0, a, b, version[a], version[b],
+      static_cast<int>(rng.Next() % 1000) };
+  };
+  std::vector<Entry> initial;
+  for (int i = 0; i < 12000; ++i)
+  {
+    initial.push_back(make(rng.Uniform()));
+  }
+  queue.PushAll(initial);
+  reference.insert(initial.begin(), initial.end());
+  std::size_t pops = 0, stale = 0, splitCosts = 0;
+  double highest = 0.0;
+  for (int round = 0; round < 20000; ++round)
+  {
+    // A collapse: pop the top, make its endpoints' entries stale, push new
+    // ones, mostly dearer than anything so far, some cheaper than the top.
+    const Entry* top = queue.TopCurrent();
+    while (!reference.empty() &&
+      !(version[reference.begin()->A] == reference.begin()->VersionA &&
+        version[reference.begin()->B] == reference.begin()->VersionB))
+    {
+      reference.erase(reference.begin());
+      ++stale;
+    }
+    ASSERT_EQ(top == nullptr, reference.empty());
+    if (!top)
+    {
+      break;
+    }
+    const Entry expected = *reference.begin();
+    ASSERT_EQ(top->Cost, expected.Cost) << "pop " << pops;
+    ASSERT_EQ(top->A, expected.A);
+    ASSERT_EQ(top->B, expected.B);
+    ASSERT_EQ(top->VersionA, expected.VersionA);
+    ASSERT_EQ(top->VersionB, expected.VersionB);
+    ASSERT_EQ(top->Target, expected.Target);
+    const Index a = top->A, b = top->B;
+    const double cost = top->Cost;
+    highest = std::max(highest, cost);
+    queue.PopTop();
+    reference.erase(reference.find(expected));
+    ++pops;
+    ++version[a];
+    ++version[b];
+    for (int k = 0; k < 4; ++k)
+    {
+      const double u = rng.Uniform();
+      const Entry e = make(u < 0.05 ? cost + 0.1 * u : 1.0 + 4.0 * u);
+      splitCosts += e.Cost >= 1.0 ? 1 : 0;
+      queue.Push(e);
+      reference.insert(e);
+    }
+  }
+  EXPECT_EQ(pops, 20000u);
+  EXPECT_GT(stale, 1000u);
+  // The costs pushed above the initial ones outgrew the last bucket, which
+  // was split and reached.
+  EXPECT_GT(splitCosts, 3u * 8192u);
+  EXPECT_GT(highest, 1.0);
+  queue.Clear();
+  EXPECT_EQ(queue.TopCurrent(), nullptr);
+  EXPECT_EQ(queue.Size(), 0u);
 }

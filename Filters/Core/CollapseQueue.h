@@ -61,17 +61,15 @@ public:
     this->Clear();
   }
 
-  /// Pushes many entries at once, into buckets at quantiles of their costs.
-  void PushAll(const std::vector<Entry>& entries)
+  /// Pushes many entries at once, into buckets at quantiles of their costs
+  /// (pass an rvalue to spare a copy).
+  void PushAll(std::vector<Entry> entries)
   {
-    std::vector<Entry> all;
-    all.reserve(this->Size() + entries.size());
-    this->MoveAllTo(all);
-    all.insert(all.end(), entries.begin(), entries.end());
+    this->MoveAllTo(entries);
     const double lowest = -std::numeric_limits<double>::infinity();
-    std::vector<double> bounds = QuantileBounds(all, lowest);
-    this->Stored = all.size();
-    this->Spread(std::move(all), std::move(bounds), lowest);
+    std::vector<double> bounds = QuantileBounds(entries, lowest);
+    this->Stored = entries.size();
+    this->Spread(std::move(entries), std::move(bounds), lowest);
     this->SizeAfterCleanUp = this->Stored;
     this->PushesSinceCleanUp = 0;
   }
@@ -272,20 +270,37 @@ private:
 
   // Replaces the (empty) buckets with `all` split at `bounds`; every cost is
   // at least `lower`, the heap's limit from now on (the heap is empty).
+  // Buckets are sized first: `all` and the buckets are the peak memory.
   void Spread(std::vector<Entry> all, std::vector<double> bounds, double lower)
   {
     this->Bounds = std::move(bounds);
     this->Buckets.assign(this->Bounds.size() + 1, std::vector<Entry>());
     this->NextBucket = 0;
     this->HeapLimit = lower;
+    std::vector<std::size_t> counts(this->Buckets.size(), 0);
+    for (const Entry& e : all)
+    {
+      ++counts[this->BucketOf(e.Cost)];
+    }
+    for (std::size_t b = 0; b < counts.size(); ++b)
+    {
+      this->Buckets[b].reserve(counts[b]);
+    }
     for (const Entry& e : all)
     {
       this->Place(e);
     }
   }
 
-  // Into the heap when cheaper than its limit, else into the first bucket
-  // whose upper bound exceeds the cost (the last one has none).
+  // The first unopened bucket whose upper bound exceeds `cost` (the last one
+  // has none).
+  std::size_t BucketOf(double cost) const
+  {
+    return std::upper_bound(this->Bounds.begin() + this->NextBucket, this->Bounds.end(), cost) -
+      this->Bounds.begin();
+  }
+
+  // Into the heap when cheaper than its limit, else into its bucket.
   void Place(const Entry& entry)
   {
     if (entry.Cost < this->HeapLimit)
@@ -295,9 +310,7 @@ private:
     }
     else
     {
-      const auto bound =
-        std::upper_bound(this->Bounds.begin() + this->NextBucket, this->Bounds.end(), entry.Cost);
-      this->Buckets[bound - this->Bounds.begin()].push_back(entry);
+      this->Buckets[this->BucketOf(entry.Cost)].push_back(entry);
     }
   }
 

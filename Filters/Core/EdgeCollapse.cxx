@@ -636,7 +636,7 @@ void MedialEdgeCollapse::PushAllEdges()
   candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
                      [](const Candidate& c) { return !(c.Cost < HUGE_VAL); }),
     candidates.end());
-  this->Queue.PushAll(candidates);
+  this->Queue.PushAll(std::move(candidates));
 }
 
 namespace

@@ -556,6 +556,7 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   // vertices end up on a fillet's centre line depends on the order, and the
   // fillet detector's refinement of that line is sensitive to it.
   c.MaximumBatch = o.PreserveSharpFeatures ? 1 : c.MaximumBatch;
+  c.CheckAhead = o.CheckAhead;
   c.Progress = o.Progress;
   return c;
 }

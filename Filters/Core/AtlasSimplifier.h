@@ -91,6 +91,11 @@ struct AtlasSimplifierOptions
   /// Refuse collapses that fold two triangles onto each other (dihedral
   /// angle below 10 degrees); allowed anyway once nothing else is left.
   bool PreventFolds = true;
+  /// With PreserveSharpFeatures, collapses are made one at a time in the
+  /// greedy order; with a second thread, the next candidate's validity is
+  /// checked there meanwhile (EdgeCollapseOptions::CheckAhead). The same
+  /// result either way; off only to compare.
+  bool CheckAhead = true;
   /// Fraction in [0, 1]; returning false aborts (the result is then empty).
   std::function<bool(double)> Progress;
 };
@@ -122,7 +127,8 @@ struct AtlasSimplifierResult : EdgeCollapseCounts
 
 /// `rvd`: the restricted Voronoi diagram whose sites the Atlases refer to
 /// (its polygons give each cell's quadric, its flags the feature classes);
-/// `sites`: the site positions. Single-threaded and deterministic.
+/// `sites`: the site positions. Deterministic: the same result at any
+/// thread count.
 AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
   const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
   const AtlasSimplifierOptions& options = AtlasSimplifierOptions());

@@ -130,12 +130,7 @@ public:
   /// Entries held, stale ones included.
   std::size_t Size() const { return this->Stored; }
 
-private:
-  static constexpr std::size_t Arity = 4;
-  // Entries per bucket when costs are split at quantiles.
-  static constexpr std::size_t BucketSize = 4096;
-
-  // True when `p` is popped before `q`.
+  /// True when `p` is popped before `q`.
   static bool Before(const Entry& p, const Entry& q)
   {
     if (p.Cost != q.Cost)
@@ -144,6 +139,11 @@ private:
     }
     return std::tie(p.A, p.B, p.VersionA, p.VersionB) < std::tie(q.A, q.B, q.VersionA, q.VersionB);
   }
+
+private:
+  static constexpr std::size_t Arity = 4;
+  // Entries per bucket when costs are split at quantiles.
+  static constexpr std::size_t BucketSize = 4096;
 
   void SiftUp(std::size_t i)
   {

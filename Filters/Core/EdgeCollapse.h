@@ -63,6 +63,10 @@ struct EdgeCollapseOptions
   /// enough that a batch's work (tens of microseconds per collapse)
   /// outweighs handing it to the threads.
   std::size_t MaximumBatch = 64;
+  /// One at a time (MaximumBatch 1) with a second thread: check the next
+  /// candidate's validity there while the current one collapses. The same
+  /// result either way; off only to compare with the plain loop.
+  bool CheckAhead = true;
   /// Fraction in [0, 1]; returning false aborts.
   std::function<bool(double)> Progress;
 };
@@ -196,9 +200,18 @@ private:
   // False when none is left.
   bool LookFurther(std::size_t count, bool gather);
   void CollapseTaken(BatchItem& item, CollapseScratch& scratch);
+  void NoteCollapse(BatchItem& item, const CollapseScratch& scratch) const;
+  void EvaluateMergedEdges(BatchItem& item, CollapseScratch& scratch);
+  bool Finish(const BatchItem& item);
+  bool TakeNext(Candidate& out);
+  bool CollapseInOrder(std::size_t target, const std::function<bool(std::size_t)>& progress);
   // Sets scratch.EulerNeutral when it holds only as an Euler-neutral collapse.
   bool LinkConditionHolds(Index a, Index b, CollapseScratch& scratch) const;
   bool Collapse(Index a, Index b, const Sphere& target, CollapseScratch& scratch);
+  // Collapse's two halves: the validity checks (filling scratch's face keys
+  // and merged faces), then the changes, from that scratch.
+  bool CollapseIsValid(Index a, Index b, const Sphere& target, CollapseScratch& scratch) const;
+  void ApplyCollapse(Index a, Index b, const Sphere& target, CollapseScratch& scratch);
   bool CollapseAtFallback(Index a, Index b, CollapseScratch& scratch);
   bool CreatesFold(Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const;
   std::size_t FoldsAroundMerged(

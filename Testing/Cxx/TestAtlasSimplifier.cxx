@@ -355,6 +355,40 @@ TEST(AtlasSimplifier, ParallelBatchesAreDeterministicAndValid)
   EXPECT_EQ(cad.Result.Batches, cad.Result.Collapses + cad.Result.RejectedCollapses);
 }
 
+// CAD mode collapses one at a time in the greedy order; with two threads
+// the next candidate is checked ahead on the second one. The result must be
+// that of the plain loop, bit for bit, at one thread and at two.
+TEST(AtlasSimplifier, CheckingAheadKeepsTheGreedyOrder)
+{
+  const TriangleMesh box = MakeRoundedBox({ 2.0, 1.5, 1.0 }, 0.2, 12);
+  const SimplifiedRun initial = medialaxis::test::InitialMedialAxis(box, 8000);
+  auto simplify = [&](bool checkAhead)
+  {
+    AtlasSimplifierOptions options;
+    options.TargetNumberOfVertices = 300;
+    options.PreserveSharpFeatures = true;
+    options.CheckAhead = checkAhead;
+    return SimplifyMedialAxis(initial.Initial, initial.Rvd, initial.Sites.Points, options);
+  };
+  const AtlasSimplifierResult plain = RunWithThreads(2, [&] { return simplify(false); });
+  for (int threads = 1; threads <= 2; ++threads)
+  {
+    const AtlasSimplifierResult ahead = RunWithThreads(threads, [&] { return simplify(true); });
+    const MedialMesh &m = plain.Medial.Mesh, &other = ahead.Medial.Mesh;
+    ASSERT_EQ(other.Centers.size(), m.Centers.size()) << threads << " threads";
+    EXPECT_EQ(
+      0, std::memcmp(other.Centers.data(), m.Centers.data(), m.Centers.size() * sizeof(Point3)))
+      << threads << " threads";
+    EXPECT_EQ(other.Radii, m.Radii);
+    EXPECT_EQ(other.Faces, m.Faces);
+    EXPECT_EQ(ahead.Medial.AtlasSites, plain.Medial.AtlasSites);
+    EXPECT_EQ(ahead.Collapses, plain.Collapses);
+    EXPECT_EQ(ahead.RejectedCollapses, plain.RejectedCollapses);
+  }
+  EXPECT_EQ(plain.Medial.Mesh.Centers.size(), 300u);
+  EXPECT_TRUE(ValidateMedialMesh(plain.Medial.Mesh).IsValid());
+}
+
 TEST(AtlasSimplifier, AtlasesKeepEverySite)
 {
   const SimplifiedRun run = Simplify(MakeCapsule(0.5, 2.0, 16), 3000, 100, false);

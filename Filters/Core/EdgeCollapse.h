@@ -200,6 +200,7 @@ private:
   // False when none is left.
   bool LookFurther(std::size_t count, bool gather);
   void CollapseTaken(BatchItem& item, CollapseScratch& scratch);
+  void CollapseOnly(BatchItem& item, CollapseScratch& scratch);
   void NoteCollapse(BatchItem& item, const CollapseScratch& scratch) const;
   void EvaluateMergedEdges(BatchItem& item, CollapseScratch& scratch);
   bool Finish(const BatchItem& item);

@@ -552,9 +552,10 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   c.StrictLinkConditionVertexCount = o.StrictLinkConditionVertexCount;
   c.StrictTopologyGuard = o.StrictTopologyGuard;
   c.PreventFolds = o.PreventFolds;
-  // With sharp features (CAD) the strictly sequential order: which medial
-  // vertices end up on a fillet's centre line depends on the order, and the
-  // fillet detector's refinement of that line is sensitive to it.
+  // With sharp features (CAD) the strictly sequential order (checked ahead
+  // on a second thread, with the same result): which medial vertices end up
+  // on a fillet's centre line depends on the order, and the fillet
+  // detector's refinement of that line is sensitive to it.
   c.MaximumBatch = o.PreserveSharpFeatures ? 1 : c.MaximumBatch;
   c.CheckAhead = o.CheckAhead;
   c.Progress = o.Progress;

@@ -65,8 +65,10 @@ struct QMatSimplifierResult : EdgeCollapseCounts
   std::size_t NestedCones = 0;
 };
 
-/// Any medial mesh (ours or read from a .ma file). Single-threaded apart from
-/// the first evaluation of every edge, and deterministic.
+/// Any medial mesh (ours or read from a .ma file). One collapse at a time in
+/// the greedy order (a second thread, if any, evaluates every edge first,
+/// then checks the next candidate and shares the re-evaluations; see
+/// EdgeCollapseOptions::CheckAhead), and deterministic.
 QMatSimplifierResult SimplifyMedialAxisQMat(
   const AtlasMedialMesh& input, const QMatSimplifierOptions& options = QMatSimplifierOptions());
 }

@@ -951,12 +951,6 @@ bool MedialEdgeCollapse::CollapseInOrder(
   }
   this->Batch.resize(1);
   BatchItem& item = this->Batch[0];
-  // The helper only with a second thread to run it on.
-  std::unique_ptr<SpinningHelper> helper;
-  if (tbb::this_task_arena::max_concurrency() > 1)
-  {
-    helper = std::make_unique<SpinningHelper>();
-  }
   CollapseScratch scratches[2];
   std::vector<Index> regions[2];
   int current = 0; // the scratch (and checks) of the current candidate
@@ -985,14 +979,15 @@ bool MedialEdgeCollapse::CollapseInOrder(
     std::atomic<std::size_t> Next{ 0 };
     Index Vertex = -1;
     std::size_t Count = 0;
-  } shared;
+  };
+  Evaluations shared;
   std::vector<Candidate> evaluated;
   auto evaluate = [&](CollapseScratch& scratch)
   {
-    const std::vector<Index>& ring = this->VertexNeighbours[shared.Vertex];
     for (std::size_t k; (k = shared.Next.fetch_add(1, std::memory_order_relaxed)) < shared.Count;)
     {
-      evaluated[k] = this->MakeCandidate(shared.Vertex, ring[k], scratch);
+      evaluated[k] =
+        this->MakeCandidate(shared.Vertex, this->VertexNeighbours[shared.Vertex][k], scratch);
     }
   };
   CollapseScratch helperScratch;
@@ -1008,6 +1003,34 @@ bool MedialEdgeCollapse::CollapseInOrder(
     }
     evaluate(helperScratch);
   };
+  // The helper only with a second thread to run it on; declared after what
+  // its jobs use, so that it stops first.
+  std::unique_ptr<SpinningHelper> helper;
+  if (tbb::this_task_arena::max_concurrency() > 1)
+  {
+    helper = std::make_unique<SpinningHelper>();
+  }
+  // Leaving with a job posted (an exception on this thread): release the
+  // job if it still waits for the evaluations, and let it finish.
+  bool posted = false;
+  struct Settle
+  {
+    std::unique_ptr<SpinningHelper>& Helper;
+    Evaluations& Shared;
+    const bool& Posted;
+    ~Settle()
+    {
+      if (this->Posted)
+      {
+        if (this->Shared.State.load(std::memory_order_relaxed) == 0)
+        {
+          this->Shared.Count = 0;
+          this->Shared.State.store(1, std::memory_order_release);
+        }
+        this->Helper->Wait();
+      }
+    }
+  } settle{ helper, shared, posted };
   while (this->NumberAlive > target)
   {
     if (!haveCurrent && !this->TakeNext(item.Taken))
@@ -1075,6 +1098,7 @@ bool MedialEdgeCollapse::CollapseInOrder(
     if (helper)
     {
       helper->Post(&helperJob);
+      posted = true;
     }
     collapseCurrent();
     // The merged vertex's edges: the policy's follow-up, then the
@@ -1094,6 +1118,7 @@ bool MedialEdgeCollapse::CollapseInOrder(
     if (helper)
     {
       helper->Wait();
+      posted = false;
     }
     for (std::size_t k = 0; k < count; ++k)
     {

@@ -200,11 +200,19 @@ private:
   // False when none is left.
   bool LookFurther(std::size_t count, bool gather);
   void CollapseTaken(BatchItem& item, CollapseScratch& scratch);
+  // CollapseTaken without re-evaluating the merged vertex's edges.
   void CollapseOnly(BatchItem& item, CollapseScratch& scratch);
+  // Copies what the collapse did (Euler-neutral, merged faces) to the item.
   void NoteCollapse(BatchItem& item, const CollapseScratch& scratch) const;
+  // The policy's follow-up, then the merged vertex's edges into item.Pushes.
   void EvaluateMergedEdges(BatchItem& item, CollapseScratch& scratch);
+  // Counts the item and queues its pushes; true when it collapsed.
   bool Finish(const BatchItem& item);
+  // The cheapest current candidate off the queue, unless the queue is dry
+  // or it costs more than MaximumCost (then AboveCostLimit).
   bool TakeNext(Candidate& out);
+  // CollapseUntil for MaximumBatch 1: the greedy order, checked ahead on a
+  // second thread (CheckAhead).
   bool CollapseInOrder(std::size_t target, const std::function<bool(std::size_t)>& progress);
   // Sets scratch.EulerNeutral when it holds only as an Euler-neutral collapse.
   bool LinkConditionHolds(Index a, Index b, CollapseScratch& scratch) const;

@@ -721,16 +721,10 @@ bool MedialEdgeCollapse::ClaimRegion(const std::vector<Index>& region)
 bool MedialEdgeCollapse::LookFurther(std::size_t count, bool gather)
 {
   const std::size_t first = this->Looked.size();
-  const Candidate* top = nullptr;
-  while (this->Looked.size() - first < count && (top = this->Queue.TopCurrent()) != nullptr)
+  Candidate taken;
+  while (this->Looked.size() - first < count && this->TakeNext(taken))
   {
-    if (top->Cost > this->Options.MaximumCost)
-    {
-      this->AboveCostLimit = true;
-      break;
-    }
-    this->Looked.push_back(*top);
-    this->Queue.PopTop();
+    this->Looked.push_back(taken);
   }
   const std::size_t end = this->Looked.size();
   if (!gather || end == first)
@@ -762,8 +756,10 @@ void MedialEdgeCollapse::CollapseTaken(BatchItem& item, CollapseScratch& scratch
   this->EvaluateMergedEdges(item, scratch);
 }
 
-// CollapseTaken without the re-evaluation.
-void MedialEdgeCollapse::CollapseOnly(BatchItem& item, CollapseScratch& scratch)
+// CollapseTaken without the re-evaluation; with `checked`, the link
+// condition and the target placement's validity as found earlier.
+void MedialEdgeCollapse::CollapseOnly(
+  BatchItem& item, CollapseScratch& scratch, const CollapseCheck* checked)
 {
   const Candidate& c = item.Taken;
   scratch.EulerNeutral = false;
@@ -774,8 +770,29 @@ void MedialEdgeCollapse::CollapseOnly(BatchItem& item, CollapseScratch& scratch)
   // not for every placement tried.
   const bool guarded =
     this->NumberAlive <= this->Options.TopologyGuardVertexCount && !this->Relaxed;
-  item.Collapsed = !(guarded && !this->LinkConditionHolds(c.A, c.B, scratch)) &&
-    (this->Collapse(c.A, c.B, c.Target, scratch) || this->CollapseAtFallback(c.A, c.B, scratch));
+  bool linkHolds = true;
+  if (guarded && checked)
+  {
+    linkHolds = checked->LinkHolds;
+    scratch.EulerNeutral = checked->EulerNeutral;
+  }
+  else if (guarded)
+  {
+    linkHolds = this->LinkConditionHolds(c.A, c.B, scratch);
+  }
+  if (!linkHolds)
+  {
+    item.Collapsed = false;
+  }
+  else if (checked ? checked->Valid : this->CollapseIsValid(c.A, c.B, c.Target, scratch))
+  {
+    this->ApplyCollapse(c.A, c.B, c.Target, scratch);
+    item.Collapsed = true;
+  }
+  else
+  {
+    item.Collapsed = this->CollapseAtFallback(c.A, c.B, scratch);
+  }
   this->NoteCollapse(item, scratch);
 }
 
@@ -927,20 +944,21 @@ private:
 // order, with two threads: while one collapses the current candidate, the
 // other runs the validity checks of the next one in the queue when their
 // regions are disjoint (GatherRegion: neither writes what the other reads);
-// then both re-evaluate the merged vertex's edges. That candidate is the next one in the
-// sequential order unless an edge the collapse re-evaluated is cheaper
-// (about 4% of the time on CAD meshes); then it goes back to the queue and
-// its checks are dropped. The checks depend on the vertex count only
-// through the link condition: whether it guards is decided when the
-// candidate's turn comes, and checks made on the other side of the strict
-// link condition's threshold are redone.
+// then both re-evaluate the merged vertex's edges. The checked candidate is
+// the next one in the sequential order unless an edge the collapse
+// re-evaluated is cheaper (about 4% of the time on CAD meshes); then it goes
+// back to the queue and its checks are dropped. The checks depend on the
+// vertex count only through the link condition: whether it guards is
+// decided when the candidate's turn comes, and checks made on the other side
+// of the strict link condition's threshold are redone.
 bool MedialEdgeCollapse::CollapseInOrder(
   std::size_t target, const std::function<bool(std::size_t)>& progress)
 {
   struct Checked
   {
-    bool Done = false, LinkHolds = false, EulerNeutral = false, Valid = false;
+    bool Done = false;
     bool Strict = false; // the link condition was strict (by the vertex count)
+    CollapseCheck Found;
   };
   auto strict = [this]
   { return this->NumberAlive <= this->Options.StrictLinkConditionVertexCount; };
@@ -966,9 +984,9 @@ bool MedialEdgeCollapse::CollapseInOrder(
     scratch.FoldsBeforeA = scratch.FoldsBeforeB = -1;
     scratch.MergedFaces = scratch.EulerNeutralMerges = 0;
     check.Strict = strict();
-    check.LinkHolds = this->LinkConditionHolds(next.A, next.B, scratch);
-    check.EulerNeutral = scratch.EulerNeutral;
-    check.Valid = this->CollapseIsValid(next.A, next.B, next.Target, scratch);
+    check.Found.LinkHolds = this->LinkConditionHolds(next.A, next.B, scratch);
+    check.Found.EulerNeutral = scratch.EulerNeutral;
+    check.Found.Valid = this->CollapseIsValid(next.A, next.B, next.Target, scratch);
     check.Done = true;
   };
   // Evaluations of the merged vertex's edges, taken one at a time by
@@ -1058,40 +1076,10 @@ bool MedialEdgeCollapse::CollapseInOrder(
       this->GatherRegion(next.A, next.B, regions[1]);
       overlap = !this->ClaimRegion(regions[1]);
     }
-    auto collapseCurrent = [&]
-    {
-      CollapseScratch& scratch = scratches[current];
-      const Checked& check = checks[current];
-      if (!check.Done || check.Strict != strict())
-      {
-        this->CollapseOnly(item, scratch);
-        return;
-      }
-      // Checked already: the guard and the target placement as in
-      // CollapseTaken, then the fallbacks if the placement was invalid.
-      scratch.FoldsBeforeA = scratch.FoldsBeforeB = -1;
-      scratch.MergedFaces = scratch.EulerNeutralMerges = 0;
-      item.Pushes.clear();
-      const Candidate& c = item.Taken;
-      const bool guarded =
-        this->NumberAlive <= this->Options.TopologyGuardVertexCount && !this->Relaxed;
-      scratch.EulerNeutral = guarded && check.EulerNeutral;
-      if (guarded && !check.LinkHolds)
-      {
-        item.Collapsed = false;
-        return;
-      }
-      if (check.Valid)
-      {
-        this->ApplyCollapse(c.A, c.B, c.Target, scratch);
-        item.Collapsed = true;
-      }
-      else
-      {
-        item.Collapsed = this->CollapseAtFallback(c.A, c.B, scratch);
-      }
-      this->NoteCollapse(item, scratch);
-    };
+    // Checks made on the other side of the strict link condition's
+    // threshold are redone.
+    const Checked& check = checks[current];
+    const bool useCheck = check.Done && check.Strict == strict();
     checks[1 - current].Done = false;
     checkAhead = haveNext && !overlap && helper;
     shared.State.store(0, std::memory_order_relaxed);
@@ -1100,7 +1088,7 @@ bool MedialEdgeCollapse::CollapseInOrder(
       helper->Post(&helperJob);
       posted = true;
     }
-    collapseCurrent();
+    this->CollapseOnly(item, scratches[current], useCheck ? &check.Found : nullptr);
     // The merged vertex's edges: the policy's follow-up, then the
     // evaluations, shared with the helper once it is done checking.
     std::size_t count = 0;

@@ -200,8 +200,15 @@ private:
   // False when none is left.
   bool LookFurther(std::size_t count, bool gather);
   void CollapseTaken(BatchItem& item, CollapseScratch& scratch);
-  // CollapseTaken without re-evaluating the merged vertex's edges.
-  void CollapseOnly(BatchItem& item, CollapseScratch& scratch);
+  // What a collapse's checks found, when made ahead (CollapseInOrder).
+  struct CollapseCheck
+  {
+    bool LinkHolds = false, EulerNeutral = false, Valid = false;
+  };
+  // CollapseTaken without re-evaluating the merged vertex's edges; with
+  // `checked`, the link condition and the placement's validity found ahead.
+  void CollapseOnly(
+    BatchItem& item, CollapseScratch& scratch, const CollapseCheck* checked = nullptr);
   // Copies what the collapse did (Euler-neutral, merged faces) to the item.
   void NoteCollapse(BatchItem& item, const CollapseScratch& scratch) const;
   // The policy's follow-up, then the merged vertex's edges into item.Pushes.

@@ -2,6 +2,7 @@
 #include "AtlasSimplifier.h"
 
 #include "EdgeCollapse.h"
+#include "Prefetch.h"
 #include "SortedLists.h"
 #include "SphereQuadric.h"
 #include "Vec3.h"
@@ -93,6 +94,11 @@ public:
   void Merged(MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) override;
   std::vector<Index> Prepare(MedialEdgeCollapse& mesh) override;
   void AfterCollapse(MedialEdgeCollapse& mesh, Index a, CollapseScratch& scratch) override;
+  void Prefetch(Index v) const override
+  {
+    PrefetchObject(&this->AtlasQuadric[v]);
+    medialaxis::Prefetch(this->Atlas[v].data());
+  }
   AtlasMedialMesh Output(const MedialEdgeCollapse& mesh) const;
 
   std::atomic<std::size_t> Snapped{ 0 }; // by collapses running at once

@@ -2,6 +2,7 @@
 #include "EdgeCollapse.h"
 
 #include "MedialMeshQuality.h"
+#include "Prefetch.h"
 #include "SortedLists.h"
 #include "Vec3.h"
 
@@ -478,6 +479,19 @@ std::size_t MedialEdgeCollapse::FoldsAroundMerged(
       }
     }
   }
+  // The faces scanned below are scattered through memory: requested all at
+  // once first, so that their cache misses overlap instead of queueing up
+  // behind the scan's data-dependent branches.
+  for (const auto& edge : ring)
+  {
+    const auto& u = this->VertexFaces[edge[0]];
+    const auto& v = this->VertexFaces[edge[1]];
+    for (Index f : u.size() <= v.size() ? u : v)
+    {
+      Prefetch(&this->Faces[f]);
+      Prefetch(&this->FaceAlive[f]);
+    }
+  }
   for (std::size_t i = 0; i < ring.size(); ++i)
   {
     // Ring edge (u, v) between (a, u, v) and the faces across it.
@@ -687,12 +701,24 @@ std::size_t MedialEdgeCollapse::BatchLimit(std::size_t target) const
 // each neighbour once (both lists are sorted; a and b are among them).
 void MedialEdgeCollapse::GatherRegion(Index a, Index b, std::vector<Index>& region) const
 {
-  region.clear();
+  // Sized first, then copied by a plain loop: the rings are a few entries
+  // each, for which vector::insert's bookkeeping cost more than the copy.
+  std::size_t size = 0;
   ForEachInUnion(this->VertexNeighbours[a], this->VertexNeighbours[b],
     [&](Index u, bool)
     {
-      const auto& ring = this->VertexNeighbours[u];
-      region.insert(region.end(), ring.begin(), ring.end());
+      Prefetch(this->VertexNeighbours[u].data());
+      size += this->VertexNeighbours[u].size();
+    });
+  region.resize(size);
+  Index* out = region.data();
+  ForEachInUnion(this->VertexNeighbours[a], this->VertexNeighbours[b],
+    [&](Index u, bool)
+    {
+      for (Index v : this->VertexNeighbours[u])
+      {
+        *out++ = v;
+      }
     });
 }
 
@@ -756,12 +782,39 @@ void MedialEdgeCollapse::CollapseTaken(BatchItem& item, CollapseScratch& scratch
   this->EvaluateMergedEdges(item, scratch);
 }
 
+// Requests what the checks and the collapse of (a, b) read first: the faces
+// and neighbours of a and b, their spheres and the policy's data, so that
+// these scattered cache misses overlap. No effect on results.
+void MedialEdgeCollapse::PrefetchCollapse(Index a, Index b) const
+{
+  for (Index v : { a, b })
+  {
+    Prefetch(this->VertexFaces[v].data());
+    Prefetch(this->VertexNeighbours[v].data());
+    this->Policy.Prefetch(v);
+  }
+  for (Index v : { a, b })
+  {
+    for (Index f : this->VertexFaces[v])
+    {
+      Prefetch(&this->Faces[f]);
+      Prefetch(&this->FaceAlive[f]);
+    }
+    for (Index u : this->VertexNeighbours[v])
+    {
+      Prefetch(&this->Spheres[u]);
+      Prefetch(this->VertexFaces[u].data());
+    }
+  }
+}
+
 // CollapseTaken without the re-evaluation; with `checked`, the link
 // condition and the target placement's validity as found earlier.
 void MedialEdgeCollapse::CollapseOnly(
   BatchItem& item, CollapseScratch& scratch, const CollapseCheck* checked)
 {
   const Candidate& c = item.Taken;
+  this->PrefetchCollapse(c.A, c.B);
   scratch.EulerNeutral = false;
   scratch.FoldsBeforeA = scratch.FoldsBeforeB = -1;
   scratch.MergedFaces = scratch.EulerNeutralMerges = 0;
@@ -816,6 +869,21 @@ void MedialEdgeCollapse::EvaluateMergedEdges(BatchItem& item, CollapseScratch& s
   }
   const Index a = item.Taken.A;
   this->Policy.AfterCollapse(*this, a, scratch);
+  // The neighbours' data lie scattered through memory: requested for all of
+  // them first, so that the evaluations below do not wait for each in turn.
+  for (Index u : this->VertexNeighbours[a])
+  {
+    Prefetch(this->VertexNeighbours[u].data());
+    Prefetch(&this->Spheres[u]);
+    this->Policy.Prefetch(u);
+  }
+  for (Index u : this->VertexNeighbours[a])
+  {
+    for (Index v : this->VertexNeighbours[u])
+    {
+      Prefetch(&this->Spheres[v]);
+    }
+  }
   for (Index u : this->VertexNeighbours[a])
   {
     const Candidate next = this->MakeCandidate(a, u, scratch);

@@ -122,6 +122,9 @@ public:
   /// After every collapse into a (e.g. retry moves that were refused). May
   /// move a and its neighbours, and read up to three edges away from a.
   virtual void AfterCollapse(MedialEdgeCollapse&, Index, CollapseScratch&) {}
+  /// A hint that Evaluate will soon read vertex v's data: requests it from
+  /// memory so that the misses of several edges overlap. No effect on results.
+  virtual void Prefetch(Index) const {}
 };
 
 /// The medial mesh being simplified, in the policy's unit frame, with the
@@ -230,6 +233,7 @@ private:
   void ApplyCollapse(Index a, Index b, const Sphere& target, CollapseScratch& scratch);
   bool CollapseAtFallback(Index a, Index b, CollapseScratch& scratch);
   bool CreatesFold(Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const;
+  void PrefetchCollapse(Index a, Index b) const;
   std::size_t FoldsAroundMerged(
     Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const;
   std::size_t CountFolds(const std::vector<std::array<Index, 3>>& centre, Index moved,

@@ -3,6 +3,7 @@
 
 #include "EdgeCollapse.h"
 #include "MedialPrimitives.h"
+#include "Prefetch.h"
 #include "SphereQuadric.h"
 #include "Vec3.h"
 
@@ -42,6 +43,7 @@ public:
   std::array<Sphere, 3> FallbackSpheres(
     const MedialEdgeCollapse& mesh, Index a, Index b) const override;
   void Merged(MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) override;
+  void Prefetch(Index v) const override { PrefetchObject(&this->Quadric[v]); }
   AtlasMedialMesh Output(const MedialEdgeCollapse& mesh) const;
 
   std::size_t FacesWithoutTangentPlanes = 0, NestedCones = 0;

@@ -10,6 +10,7 @@
 #define medialaxis_BoxTree_h
 
 #include "MedialMesh.h" // Point3
+#include "Prefetch.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -143,6 +144,10 @@ public:
         }
         continue;
       }
+      // The children's records are read when they are popped: requested now,
+      // while their bounds are computed (a cache miss per node otherwise).
+      Prefetch(&nodes[n.Begin]);
+      Prefetch(&nodes[n.Begin + 1]);
       const double b0 = bound(nodes[n.Begin]), b1 = bound(nodes[n.Begin + 1]);
       // Push the farther child first so that the nearer one is searched first.
       if (b0 <= b1)

@@ -768,6 +768,18 @@ bool MedialEdgeCollapse::LookFurther(std::size_t count, bool gather)
     {
       for (std::size_t k = r.begin(); k != r.end(); ++k)
       {
+        // The next candidates' neighbour lists, requested ahead in two steps:
+        // the lists' headers two candidates ahead, their entries one ahead.
+        if (k + 2 < r.end())
+        {
+          Prefetch(&this->VertexNeighbours[this->Looked[k + 2].A]);
+          Prefetch(&this->VertexNeighbours[this->Looked[k + 2].B]);
+        }
+        if (k + 1 < r.end())
+        {
+          Prefetch(this->VertexNeighbours[this->Looked[k + 1].A].data());
+          Prefetch(this->VertexNeighbours[this->Looked[k + 1].B].data());
+        }
         this->GatherRegion(this->Looked[k].A, this->Looked[k].B, this->Regions[k]);
       }
     });

@@ -12,8 +12,11 @@ namespace medialaxis
 namespace
 {
 constexpr double Infinity = std::numeric_limits<double>::infinity();
-// Primitives per tree leaf: evaluating one costs less than a node's bound.
-constexpr int EnvelopeLeafSize = 8;
+// Primitives per tree leaf: evaluating one costs less than a node's bound,
+// and fewer, larger nodes mean fewer cache misses (bunny at 5,000 spheres:
+// error evaluation 1.55-1.84 s with 16 against 1.81-2.15 s with 8; 24 and 32
+// within noise of 16, 4 much slower).
+constexpr int EnvelopeLeafSize = 16;
 
 Box BallBox(const Point3& c, double r)
 {

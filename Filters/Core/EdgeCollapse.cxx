@@ -486,11 +486,7 @@ std::size_t MedialEdgeCollapse::FoldsAroundMerged(
   {
     const auto& u = this->VertexFaces[edge[0]];
     const auto& v = this->VertexFaces[edge[1]];
-    for (Index f : u.size() <= v.size() ? u : v)
-    {
-      Prefetch(&this->Faces[f]);
-      Prefetch(&this->FaceAlive[f]);
-    }
+    this->PrefetchFaces(u.size() <= v.size() ? u : v);
   }
   for (std::size_t i = 0; i < ring.size(); ++i)
   {
@@ -794,6 +790,16 @@ void MedialEdgeCollapse::CollapseTaken(BatchItem& item, CollapseScratch& scratch
   this->EvaluateMergedEdges(item, scratch);
 }
 
+// Requests the records of the given faces and whether each is alive.
+void MedialEdgeCollapse::PrefetchFaces(const std::vector<Index>& faces) const
+{
+  for (Index f : faces)
+  {
+    Prefetch(&this->Faces[f]);
+    Prefetch(&this->FaceAlive[f]);
+  }
+}
+
 // Requests what the checks and the collapse of (a, b) read first: the faces
 // and neighbours of a and b, their spheres and the policy's data, so that
 // these scattered cache misses overlap. No effect on results.
@@ -807,11 +813,7 @@ void MedialEdgeCollapse::PrefetchCollapse(Index a, Index b) const
   }
   for (Index v : { a, b })
   {
-    for (Index f : this->VertexFaces[v])
-    {
-      Prefetch(&this->Faces[f]);
-      Prefetch(&this->FaceAlive[f]);
-    }
+    this->PrefetchFaces(this->VertexFaces[v]);
     for (Index u : this->VertexNeighbours[v])
     {
       Prefetch(&this->Spheres[u]);

@@ -233,6 +233,7 @@ private:
   void ApplyCollapse(Index a, Index b, const Sphere& target, CollapseScratch& scratch);
   bool CollapseAtFallback(Index a, Index b, CollapseScratch& scratch);
   bool CreatesFold(Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const;
+  void PrefetchFaces(const std::vector<Index>& faces) const;
   void PrefetchCollapse(Index a, Index b) const;
   std::size_t FoldsAroundMerged(
     Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const;

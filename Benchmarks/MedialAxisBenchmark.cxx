@@ -230,12 +230,13 @@ std::vector<Stage> RunPipeline(
   const MedialMesh& m = simplified.Medial.Mesh;
   std::printf(
     "  simplified MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "
-    "%zu collapses, %zu rejected, %zu past the link condition, %zu past the fold guard; "
+    "%zu collapses, %zu rejected, %zu past the link condition, %zu past the fold guard, "
+    "%zu to remove folds; "
     "%zu batches; set-up and first evaluation of every edge %.3f s\n",
     m.Centers.size(), m.Faces.size(), EdgesNotOnFaces(m).size(),
     static_cast<long long>(EulerCharacteristic(m)), simplified.Collapses,
     simplified.RejectedCollapses, simplified.RelaxedCollapses, simplified.FoldingAllowedCollapses,
-    simplified.Batches, simplified.QueueInitialisationSeconds);
+    simplified.FoldRepairCollapses, simplified.Batches, simplified.QueueInitialisationSeconds);
   const MedialMeshQuality quality = MeasureQuality(m);
   std::printf("  simplified MAT quality: %zu degenerate, %zu folded triangles (%zu folds), %s; "
               "mean min angle %.1f deg, %.1f%% below 30 deg, mean Q %.3f\n",

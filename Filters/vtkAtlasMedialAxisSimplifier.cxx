@@ -193,7 +193,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
       { "EulerNeutralCollapses", result.EulerNeutralCollapses },
       { "SnappedVertices", result.SnappedVertices }, { "ForcedSnaps", result.ForcedSnaps },
       { "FoldingAllowedCollapses", result.FoldingAllowedCollapses },
-      { "CollapseBatches", result.Batches },
+      { "FoldRepairCollapses", result.FoldRepairCollapses }, { "CollapseBatches", result.Batches },
       { "FringeCollapsesUsed", medialaxis::UsesFringeCollapses(options) ? 1u : 0u } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));

@@ -28,7 +28,10 @@
  * With PreserveSharpFeatures, feature vertices (Atlas on a sharp convex
  * edge, none on a concave one) are first snapped to their edge with radius 0
  * and stay there; snaps that fold or flatten a triangle are made last and
- * the collapses around them first (field data ForcedSnaps).
+ * the collapses around them first (field data ForcedSnaps). Folds that
+ * those collapses leave are removed just before the target is reached: a
+ * few vertices short of it, the cheapest collapse at each fold that leaves
+ * fewer folds around it is made (field data FoldRepairCollapses).
  *
  * The cheapest collapses whose edges lie at least five edges apart are made
  * at once, in parallel, in batches of up to 64 (field data CollapseBatches):

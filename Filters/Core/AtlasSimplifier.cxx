@@ -493,7 +493,8 @@ bool AtlasPolicy::Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid, Collap
 // Eq. 17: every feature vertex onto its sharp edge. First those whose snap
 // keeps the mesh valid; then the rest anyway (a feature vertex off its edge
 // would spoil the boundary), and the edges around those are collapsed first,
-// which removes most of the zero-area or folded triangles they make.
+// which removes most of the zero-area or folded triangles they make (the
+// others: MedialEdgeCollapse::CollapseFolds).
 std::vector<Index> AtlasPolicy::Prepare(MedialEdgeCollapse& mesh)
 {
   std::vector<Index> forced;

@@ -282,7 +282,9 @@ bool MedialEdgeCollapse::CollapseIsValid(
       {
         return false; // would be degenerate
       }
-      if (!spike && Norm(n0) > 1e-6 * l0 && Dot(n0, n1) <= 0.0)
+      // (A fold repair turns triangles over on purpose: the folds it
+      // counts are the test then.)
+      if (!spike && !scratch.FewerFolds && Norm(n0) > 1e-6 * l0 && Dot(n0, n1) <= 0.0)
       {
         return false; // would flip
       }
@@ -301,7 +303,7 @@ bool MedialEdgeCollapse::CollapseIsValid(
     }
   }
 
-  if (this->FoldGuard && (this->Options.FoldTestOnSpikes || !spike) &&
+  if (((this->FoldGuard && (this->Options.FoldTestOnSpikes || !spike)) || scratch.FewerFolds) &&
     this->CreatesFold(a, b, newPosition, scratch))
   {
     return false;
@@ -372,6 +374,44 @@ void MedialEdgeCollapse::ApplyCollapse(
   this->Policy.Merged(*this, a, b, scratch);
 }
 
+namespace
+{
+// Calls fold(u, v, x, y) for every edge (u, v) between exactly two of the
+// faces listed in `incidences` as (min, max, apex, flag), sorted, whose faces
+// (u, v, x) and (v, u, y) fold onto each other and have a flag set.
+template <typename Position, typename Fold>
+void ForEachFold(
+  const std::vector<std::array<Index, 4>>& incidences, const Position& position, const Fold& fold)
+{
+  for (std::size_t i = 0; i < incidences.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < incidences.size() && incidences[j][0] == incidences[i][0] &&
+      incidences[j][1] == incidences[i][1])
+    {
+      ++j;
+    }
+    const auto &p = incidences[i], &q = incidences[i + 1];
+    if (j - i == 2 && (p[3] || q[3]) &&
+      IsFold(position(p[0]), position(p[1]), position(p[2]), position(q[2])))
+    {
+      fold(p[0], p[1], p[2], q[2]);
+    }
+    i = j;
+  }
+}
+
+void AddIncidences(
+  std::vector<std::array<Index, 4>>& incidences, const std::array<Index, 3>& t, Index flag)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    const Index u = t[k], v = t[(k + 1) % 3];
+    incidences.push_back({ std::min(u, v), std::max(u, v), t[(k + 2) % 3], flag });
+  }
+}
+}
+
 // Folded manifold edges among the edges of the `centre` faces, with the
 // faces across them taken from `centre` and scratch.Outer; vertex `moved` sits
 // at `movedTo`.
@@ -385,37 +425,39 @@ std::size_t MedialEdgeCollapse::CountFolds(const std::vector<std::array<Index, 3
   };
   auto& incidences = scratch.EdgeIncidences;
   incidences.clear();
-  auto add = [&incidences](const std::vector<std::array<Index, 3>>& faces, Index isCentre)
+  for (const auto& t : centre)
   {
-    for (const auto& t : faces)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        const Index u = t[k], v = t[(k + 1) % 3];
-        incidences.push_back({ std::min(u, v), std::max(u, v), t[(k + 2) % 3], isCentre });
-      }
-    }
-  };
-  add(centre, 1);
-  add(scratch.Outer, 0);
+    AddIncidences(incidences, t, 1);
+  }
+  for (const auto& t : scratch.Outer)
+  {
+    AddIncidences(incidences, t, 0);
+  }
   std::sort(incidences.begin(), incidences.end());
   std::size_t folds = 0;
-  for (std::size_t i = 0; i < incidences.size();)
+  ForEachFold(incidences, position, [&folds](Index, Index, Index, Index) { ++folds; });
+  return folds;
+}
+
+// Every folded edge (u, v, x, y) of the mesh, as in CountFolds.
+std::vector<std::array<Index, 4>> MedialEdgeCollapse::FindFolds(CollapseScratch& scratch) const
+{
+  auto& incidences = scratch.EdgeIncidences;
+  incidences.clear();
+  for (std::size_t f = 0; f < this->Faces.size(); ++f)
   {
-    std::size_t j = i + 1;
-    while (j < incidences.size() && incidences[j][0] == incidences[i][0] &&
-      incidences[j][1] == incidences[i][1])
+    if (this->FaceAlive[f])
     {
-      ++j;
+      AddIncidences(incidences, this->Faces[f], 1);
     }
-    const auto &p = incidences[i], &q = incidences[i + 1];
-    if (j - i == 2 && (p[3] || q[3]) &&
-      IsFold(position(p[0]), position(p[1]), position(p[2]), position(q[2])))
-    {
-      ++folds;
-    }
-    i = j;
   }
+  std::sort(incidences.begin(), incidences.end());
+  std::vector<std::array<Index, 4>> folds;
+  ForEachFold(
+    incidences, [this](Index v) { return this->Position(v); },
+    [&folds](Index u, Index v, Index x, Index y) {
+      folds.push_back({ u, v, x, y });
+    });
   return folds;
 }
 
@@ -534,15 +576,17 @@ bool MedialEdgeCollapse::CreatesFold(
   Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const
 {
   const std::size_t foldsAfter = this->FoldsAroundMerged(a, b, newPosition, scratch);
-  if (foldsAfter == 0)
+  if (foldsAfter == 0 && !scratch.FewerFolds)
   {
     return false;
   }
   // Rare: were there as many folds before (in a medial mesh given as input)?
   // That does not depend on the placement: counted once per edge.
+  auto tooMany = [&scratch](std::size_t after)
+  { return scratch.FewerFolds ? after >= scratch.FoldsBefore : after > scratch.FoldsBefore; };
   if (scratch.FoldsBeforeA == a && scratch.FoldsBeforeB == b)
   {
-    return foldsAfter > scratch.FoldsBefore;
+    return tooMany(foldsAfter);
   }
   auto has = [](const std::array<Index, 3>& t, Index v)
   { return t[0] == v || t[1] == v || t[2] == v; };
@@ -588,7 +632,7 @@ bool MedialEdgeCollapse::CreatesFold(
   scratch.FoldsBefore = this->CountFolds(before, -1, newPosition, scratch);
   scratch.FoldsBeforeA = a;
   scratch.FoldsBeforeB = b;
-  return foldsAfter > scratch.FoldsBefore;
+  return tooMany(foldsAfter);
 }
 
 // When the optimal sphere would break validity: the policy's fallback
@@ -614,6 +658,10 @@ bool MedialEdgeCollapse::MoveKeepsValid(
   faces.clear();
   for (Index f : this->VertexFaces[v])
   {
+    if (!this->FaceAlive[f])
+    {
+      continue; // the lists of vertices off a collapsed edge keep its dead faces
+    }
     Point3 p[3];
     for (int k = 0; k < 3; ++k)
     {
@@ -631,6 +679,71 @@ bool MedialEdgeCollapse::MoveKeepsValid(
   std::sort(faces.begin(), faces.end());
   return this->FoldsAroundMerged(v, -1, target, scratch) <=
     this->FoldsAroundMerged(v, -1, this->Position(v), scratch);
+}
+
+// Folds left after the urgent collapses around forced snaps (see Prepare):
+// every collapse may only keep or lower the folds around it, so nothing
+// else removes them. Collapses an edge of each folded pair of triangles, the
+// cheapest that leaves fewer folds around it, while vertices above `target`
+// remain (Run keeps some in reserve for this).
+void MedialEdgeCollapse::CollapseFolds(std::size_t target)
+{
+  CollapseScratch& scratch = this->Scratch;
+  scratch.FewerFolds = true;
+  std::vector<BatchItem> tries;
+  for (int pass = 0; pass < 8 && this->NumberAlive > target; ++pass)
+  {
+    bool collapsed = false;
+    for (const auto& fold : this->FindFolds(scratch))
+    {
+      if (this->NumberAlive <= target)
+      {
+        break;
+      }
+      if (!std::all_of(fold.begin(), fold.end(), [this](Index v) { return this->Alive(v); }))
+      {
+        continue; // merged away by a repair of an earlier fold
+      }
+      // The edges at the four vertices of the triangles (u, v, x) and
+      // (v, u, y), each once, cheapest first.
+      tries.clear();
+      for (Index w : fold)
+      {
+        for (Index n : this->VertexNeighbours[w])
+        {
+          const bool seen = std::any_of(tries.begin(), tries.end(),
+            [&](const BatchItem& t)
+            { return t.Taken.A == std::min(w, n) && t.Taken.B == std::max(w, n); });
+          if (!seen)
+          {
+            BatchItem item;
+            item.Taken = this->MakeCandidate(std::min(w, n), std::max(w, n), scratch);
+            if (item.Taken.Cost < HUGE_VAL)
+            {
+              tries.push_back(std::move(item));
+            }
+          }
+        }
+      }
+      std::stable_sort(tries.begin(), tries.end(),
+        [](const BatchItem& p, const BatchItem& q) { return p.Taken.Cost < q.Taken.Cost; });
+      for (BatchItem& item : tries)
+      {
+        this->CollapseTaken(item, scratch);
+        if (this->Finish(item))
+        {
+          ++this->Counts.FoldRepairCollapses;
+          collapsed = true;
+          break;
+        }
+      }
+    }
+    if (!collapsed)
+    {
+      break;
+    }
+  }
+  scratch.FewerFolds = false;
 }
 
 void MedialEdgeCollapse::PushAllEdges()
@@ -1371,10 +1484,27 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
   const double toRemove = static_cast<double>(nv > target ? nv - target : 1);
   auto progress = [&](std::size_t alive)
   { return report(0.1 + 0.85 * std::min(1.0, static_cast<double>(nv - alive) / toRemove)); };
-  if (!this->CollapseUntil(target, progress))
+  // Forced snaps fold triangles that the urgent collapses around them do not
+  // always unfold, and no other collapse will (each may only keep or lower
+  // the folds around it). Short of the target by one vertex per forced snap
+  // at most, collapses chosen to remove them (CollapseFolds) come first,
+  // then the rest down to the target.
+  const std::size_t reserve = this->Options.PreventFolds
+    ? std::min(urgent.size(), this->NumberAlive - std::min(this->NumberAlive, target))
+    : 0;
+  if (!this->CollapseUntil(target + reserve, progress))
   {
     this->Counts.Aborted = true;
     return this->Counts;
+  }
+  if (reserve > 0)
+  {
+    this->CollapseFolds(target);
+    if (!this->CollapseUntil(target, progress))
+    {
+      this->Counts.Aborted = true;
+      return this->Counts;
+    }
   }
   // Stalled because every remaining collapse would fold triangles onto each
   // other: where a tube's thin sheets must shrink to a curve, the last

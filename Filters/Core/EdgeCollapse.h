@@ -88,6 +88,8 @@ struct CollapseScratch
   // for that edge compares with: counted once per edge taken from the queue.
   Index FoldsBeforeA = -1, FoldsBeforeB = -1;
   std::size_t FoldsBefore = 0;
+  // Fold repair: a collapse must leave fewer folds around it than before.
+  bool FewerFolds = false;
   bool EulerNeutral = false; // the collapse passed the link test as Euler-neutral
   std::size_t MergedFaces = 0, EulerNeutralMerges = 0;
 };
@@ -237,6 +239,8 @@ private:
   void PrefetchCollapse(Index a, Index b) const;
   std::size_t FoldsAroundMerged(
     Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const;
+  std::vector<std::array<Index, 4>> FindFolds(CollapseScratch& scratch) const;
+  void CollapseFolds(std::size_t target);
   std::size_t CountFolds(const std::vector<std::array<Index, 3>>& centre, Index moved,
     const Point3& movedTo, CollapseScratch& scratch) const;
 

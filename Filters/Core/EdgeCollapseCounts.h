@@ -16,6 +16,9 @@ struct EdgeCollapseCounts
   /// Made after every collapse that keeps triangles from folding onto each
   /// other was exhausted (e.g. tubes whose sheets shrink to a curve).
   std::size_t FoldingAllowedCollapses = 0;
+  /// Collapses chosen to remove the folds left by forced moves (see
+  /// MedialEdgeCollapse::CollapseFolds).
+  std::size_t FoldRepairCollapses = 0;
   std::size_t MergedFaces = 0; // each closed a bubble (lowered the Euler characteristic)
   /// Collapses past the link condition that keep the Euler characteristic
   /// (FringeCollapses, EulerNeutralSpikeCollapses) and the face pairs they

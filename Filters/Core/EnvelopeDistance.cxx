@@ -546,7 +546,7 @@ struct SignedBound
 };
 }
 
-MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
+MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p, std::uint32_t* warm) const
 {
   Nearest best;
   best.Distance = Infinity;
@@ -556,6 +556,13 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
     // Records are in the tree's item order: visit by position.
     const Compact* records = this->Records.data();
     const std::uint32_t* items = this->Tree.GetItems().data();
+    std::uint32_t bestPosition = NoPrimitive;
+    if (warm && *warm < this->Records.size())
+    {
+      bestPosition = *warm;
+      best.Distance = CompactValue(records[bestPosition].D, records[bestPosition].Kind, p);
+      bestItem = items[bestPosition];
+    }
     const BoxTree::Node* first = this->Tree.GetNodes().data();
     const SignedBound bound(p, first, this->NodeDops.data(), this->NodePlanes.data());
     auto visit = [&](std::uint32_t begin, std::uint32_t end)
@@ -568,6 +575,7 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
         {
           best.Distance = v;
           bestItem = items[position];
+          bestPosition = position;
         }
       }
     };
@@ -592,6 +600,10 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p) const
         return false;
       },
       best.Distance);
+    if (warm)
+    {
+      *warm = bestPosition;
+    }
   }
   else
   {
@@ -856,9 +868,9 @@ double MedialEnvelope::TraceExit(const Point3& p, const Point3& direction, doubl
 }
 
 MedialEnvelope::BoundaryDistance MedialEnvelope::DistanceToBoundary(
-  const Point3& p, const Point3* hint) const
+  const Point3& p, const Point3* hint, std::uint32_t* warm) const
 {
-  const Nearest nearest = this->SignedDistance(p);
+  const Nearest nearest = this->SignedDistance(p, warm);
   if (nearest.Distance >= 0.0)
   {
     return { nearest.Distance, nearest.Distance, nearest.Distance, false, true };

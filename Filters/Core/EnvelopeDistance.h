@@ -156,7 +156,14 @@ public:
   };
   /// F(p): the smallest signed distance over all primitives, the outward
   /// normal at that primitive's closest boundary point, and the primitive.
-  Nearest SignedDistance(const Point3& p) const;
+  ///
+  /// `warm` (may be null) carries a primitive from one query to the next:
+  /// when set, the search starts from that primitive's value at p (a nearby
+  /// point's nearest primitive is near p too, which lets the search skip
+  /// more of the tree), and it is set to the primitive found. The value is
+  /// the same either way.
+  static constexpr std::uint32_t NoPrimitive = std::numeric_limits<std::uint32_t>::max();
+  Nearest SignedDistance(const Point3& p, std::uint32_t* warm = nullptr) const;
 
   /// True when F(p) < -tolerance: p is strictly inside some primitive.
   bool StrictlyInside(const Point3& p, double tolerance) const;
@@ -187,7 +194,9 @@ public:
   /// Unsigned distance from p to the boundary of U as a two-sided bound, see
   /// the file comment. `hint` (may be null) is a direction in which the
   /// boundary is likely near, e.g. the outward surface normal at p.
-  BoundaryDistance DistanceToBoundary(const Point3& p, const Point3* hint = nullptr) const;
+  /// `warm` as for SignedDistance.
+  BoundaryDistance DistanceToBoundary(
+    const Point3& p, const Point3* hint = nullptr, std::uint32_t* warm = nullptr) const;
 
   /// Signed distance to one primitive (the full primitive, slabs with their
   /// edge cones).

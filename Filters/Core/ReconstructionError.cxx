@@ -103,9 +103,10 @@ Point3 PointInTriangle(const Point3& a, const Point3& b, const Point3& c, double
   return (1.0 - s) * a + (s * (1.0 - v)) * b + (s * v) * c;
 }
 
-// Runs f(i) for i in [begin, end) in parallel, in chunks, reporting progress
-// as first + span x fraction; false when aborted.
-template <typename F>
+// Runs f(i, state) for i in [begin, end) in parallel, in chunks, reporting
+// progress as first + span x fraction; false when aborted. `state` is a
+// State made afresh for every range of indices run in order on one thread.
+template <typename State = int, typename F>
 bool ForEachChunked(
   std::size_t n, double first, double span, const std::function<bool(double)>& progress, F&& f)
 {
@@ -115,9 +116,10 @@ bool ForEachChunked(
     tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 64),
       [&](const tbb::blocked_range<std::size_t>& r)
       {
+        State state{};
         for (std::size_t i = r.begin(); i < r.end(); ++i)
         {
-          f(i);
+          f(i, state);
         }
       });
     if (progress && !progress(first + span * double(end) / double(n)))
@@ -677,13 +679,19 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   std::vector<MedialEnvelope::BoundaryDistance> distances(nv + ns);
   const std::vector<std::uint32_t> surfaceOrder = MortonOrder(
     nv + ns, [&](std::size_t i) { return i < nv ? surface.Points[i] : samples[i - nv]; });
-  if (!ForEachChunked(nv + ns, 0.0, 0.6, options.Progress,
-        [&](std::size_t k)
+  // Along the Morton curve each point's search starts from the previous
+  // point's nearest primitive (the values do not depend on it).
+  struct Warm
+  {
+    std::uint32_t Position = MedialEnvelope::NoPrimitive;
+  };
+  if (!ForEachChunked<Warm>(nv + ns, 0.0, 0.6, options.Progress,
+        [&](std::size_t k, Warm& warm)
         {
           const std::size_t i = surfaceOrder[k];
           distances[i] = i < nv
-            ? envelope.DistanceToBoundary(surface.Points[i], &vertexNormals[i])
-            : envelope.DistanceToBoundary(samples[i - nv], &sampleNormals[i - nv]);
+            ? envelope.DistanceToBoundary(surface.Points[i], &vertexNormals[i], &warm.Position)
+            : envelope.DistanceToBoundary(samples[i - nv], &sampleNormals[i - nv], &warm.Position);
         }))
   {
     result.Aborted = true;
@@ -793,7 +801,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   const TriangleLocator locator(surface);
   result.EnvelopeSampleDistance.resize(result.EnvelopeSamples.size());
   if (!ForEachChunked(result.EnvelopeSamples.size(), 0.8, 0.2, options.Progress,
-        [&](std::size_t i)
+        [&](std::size_t i, int)
         { result.EnvelopeSampleDistance[i] = locator.Distance(result.EnvelopeSamples[i]); }))
   {
     result.Aborted = true;

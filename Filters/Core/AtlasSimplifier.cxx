@@ -251,8 +251,14 @@ void AtlasPolicy::UpdateFeature(Index v)
 
 double AtlasPolicy::Weight(double spike) const
 {
-  return 1.0 /
-    (1.0 + std::exp(-this->Options.SpikeSharpness * (spike - this->Options.SpikeThreshold)));
+  const double t = this->Options.SpikeSharpness * (spike - this->Options.SpikeThreshold);
+  // Past 40, exp(-t) < 2^-57 and 1 + exp(-t) rounds to exactly 1: most
+  // edges (stability ratio above 0.43 at the default sharpness) skip the call.
+  if (t > 40.0)
+  {
+    return 1.0;
+  }
+  return 1.0 / (1.0 + std::exp(-t));
 }
 
 Placement AtlasPolicy::Solve(const MedialEdgeCollapse& mesh, const SphereQuadric& q,

@@ -109,8 +109,16 @@ private:
     const std::vector<std::pair<Point3, double>>& anchors, Index a, Index b) const;
   double Weight(double spike) const;
   // Moves feature vertex v onto its sharp edge (r = 0); with keepValid, not
-  // when that would make a zero-area or folded triangle. True if moved.
-  bool Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid, CollapseScratch& scratch);
+  // when that would make a zero-area or folded triangle.
+  enum class SnapResult
+  {
+    Moved,
+    Refused, // the move would make a zero-area or folded triangle
+    NoTarget // no point near the Atlas fits its cells' planes
+  };
+  SnapResult Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid, CollapseScratch& scratch);
+  // Whether a snap target lies among v's Atlas sites (see Snap).
+  bool NearAtlas(Index v, const Point3& target) const;
   void UpdateFeature(Index v);
   // A feature vertex already on its sharp edge (snapped, radius 0).
   bool OnFeature(const MedialEdgeCollapse& mesh, Index v) const
@@ -469,7 +477,8 @@ void AtlasPolicy::Merged(MedialEdgeCollapse&, Index a, Index b, CollapseScratch&
 // Feature vertices on one straight edge are collinear: a triangle of three
 // of them would have zero area, and a snap can fold a triangle over its
 // neighbour.
-bool AtlasPolicy::Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid, CollapseScratch& scratch)
+AtlasPolicy::SnapResult AtlasPolicy::Snap(
+  MedialEdgeCollapse& mesh, Index v, bool keepValid, CollapseScratch& scratch)
 {
   SphereQuadric q = this->AtlasQuadric[v];
   Point3 sum{ 0, 0, 0 };
@@ -484,16 +493,37 @@ bool AtlasPolicy::Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid, Collap
   Eigen::Vector3d x;
   if (!SolveQuadric<3>(q, x))
   {
-    return false;
+    return SnapResult::NoTarget;
   }
   const Point3 target{ x[0], x[1], x[2] };
+  if (!this->NearAtlas(v, target))
+  {
+    return SnapResult::NoTarget;
+  }
   if (keepValid && !mesh.MoveKeepsValid(v, target, scratch))
   {
-    return false;
+    return SnapResult::Refused;
   }
   mesh.Move(v, { x[0], x[1], x[2], 0.0 });
   ++this->Snapped;
-  return true;
+  return SnapResult::Moved;
+}
+
+// The point where the planes of an Atlas's cells meet (with r = 0) is on the
+// sharp edge when the cells lie on the two faces along it. Where they lie
+// on faces that meet only beyond the part (the flanks of a gear tooth cut
+// off by its tip, a chamfer), that point is outside, well away from every
+// site of the Atlas: a snap there would put the envelope outside the
+// surface. Refused past twice the cells' size from the nearest site.
+bool AtlasPolicy::NearAtlas(Index v, const Point3& target) const
+{
+  double nearest2 = HUGE_VAL, largestArea = 0.0;
+  for (Index s : this->Atlas[v])
+  {
+    nearest2 = std::min(nearest2, Distance2(this->Site[s], target));
+    largestArea = std::max(largestArea, this->CellArea[s]);
+  }
+  return nearest2 <= 4.0 * largestArea;
 }
 
 // Eq. 17: every feature vertex onto its sharp edge. First those whose snap
@@ -509,7 +539,8 @@ std::vector<Index> AtlasPolicy::Prepare(MedialEdgeCollapse& mesh)
     CollapseScratch scratch;
     for (std::size_t v = 0; v < mesh.NumberOfVertices(); ++v)
     {
-      if (this->Feature[v] && !this->Snap(mesh, static_cast<Index>(v), true, scratch))
+      if (this->Feature[v] &&
+        this->Snap(mesh, static_cast<Index>(v), true, scratch) == SnapResult::Refused)
       {
         forced.push_back(static_cast<Index>(v));
       }

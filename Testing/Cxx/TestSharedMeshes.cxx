@@ -7,6 +7,7 @@
 #include "MedialMeshQuality.h"
 #include "RestrictedVoronoi.h"
 #include "TestHelpers.h"
+#include "TriangleLocator.h"
 #include "VoronoiMedialAxis.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkMedialReconstructionError.h"
@@ -395,6 +396,66 @@ INSTANTIATE_TEST_SUITE_P(All, SharedMesh,
     }
     return n;
   });
+
+// Feature vertices snap onto their sharp edge with radius 0 (paper Eq. 17)
+// at the point where the planes of their Atlas cells meet. On a gear's
+// teeth and a casting's chamfers some Atlases hold cells of faces that meet
+// only beyond the part: that point is outside, up to 1.4% of the diagonal
+// from the surface (133 of 16,566 snapped spheres of the gearwheel beyond
+// 0.5%), and the envelope bulges out there. Such snaps are refused: at most
+// 0.1% of the snapped spheres, measured before any collapse, lie farther
+// than 0.5% of the diagonal from the surface.
+TEST(SharedMeshFeatureSnaps, ZeroRadiusSpheresStayOnTheSurface)
+{
+  for (const char* name : { "gearwheel.stl", "casting.off" })
+  {
+    const std::string path = MeshDir + "/" + name;
+    if (!std::ifstream(path).good())
+    {
+      GTEST_SKIP() << "shared meshes not present at " << MeshDir;
+    }
+    vtkNew<vtkSurfaceFileReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    medialaxis::TriangleMesh surface;
+    ASSERT_TRUE(medialaxis::PrepareSurfaceMesh(reader->GetOutput(), surface).Ok());
+    medialaxis::SamplingOptions sampling;
+    sampling.NumberOfSamples = 50000;
+    const auto sites = medialaxis::SampleSurface(surface, sampling);
+    const auto rvd = medialaxis::ComputeRestrictedVoronoi(surface, sites.Points);
+    const auto mat = medialaxis::ComputeVoronoiMedialAxis(
+      surface, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
+    medialaxis::AtlasMedialMesh initial;
+    initial.Mesh = mat.Mesh;
+    initial.AtlasOffsets = mat.AtlasOffsets;
+    initial.AtlasSites = mat.AtlasSites;
+    medialaxis::AtlasSimplifierOptions options;
+    options.TargetNumberOfVertices = mat.Mesh.Centers.size(); // snaps, no collapse
+    options.PreserveSharpFeatures = true;
+    const auto snapped = medialaxis::SimplifyMedialAxis(initial, rvd, sites.Points, options);
+    const auto& mesh = snapped.Medial.Mesh;
+    const auto box = medialaxis::BoundingBox(surface.Points);
+    const double diagonal = std::sqrt(medialaxis::Distance2(box.second, box.first));
+    const medialaxis::TriangleLocator locator(surface);
+    std::size_t zero = 0, off = 0;
+    double farthest = 0.0;
+    for (std::size_t v = 0; v < mesh.Centers.size(); ++v)
+    {
+      if (mesh.Radii[v] == 0.0)
+      {
+        const double d = locator.Distance(mesh.Centers[v]) / diagonal;
+        ++zero;
+        off += d > 0.005 ? 1 : 0;
+        farthest = std::max(farthest, d);
+      }
+    }
+    std::cout << name << ": " << zero << " snapped spheres, " << off
+              << " farther than 0.5% of the diagonal from the surface, farthest "
+              << 100.0 * farthest << "%\n";
+    EXPECT_GT(zero, 1000u) << name;
+    EXPECT_LE(1000 * off, zero) << name;
+  }
+}
 
 TEST(SurfaceFileReader, UnknownExtensionAndMissingFile)
 {

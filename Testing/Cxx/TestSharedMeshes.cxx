@@ -175,6 +175,43 @@ TEST_P(SharedMesh, PreparesToClosedOutwardSurfaceOfTheRightGenus)
   EXPECT_EQ(v - e + f, 2 - 2 * expected.Genus) << name;
 }
 
+// A shared mesh read and prepared, sampled, its restricted Voronoi diagram
+// and initial medial mesh (with the Atlases, as the simplifier takes it).
+struct InitialMedialAxis
+{
+  vtkNew<vtkSurfaceFileReader> Reader;
+  medialaxis::TriangleMesh Surface;
+  medialaxis::SurfaceSamples Sites;
+  medialaxis::RestrictedVoronoiDiagram Rvd;
+  medialaxis::VoronoiMedialAxisResult Mat;
+  medialaxis::AtlasMedialMesh Atlas;
+
+  // False when the surface cannot be prepared.
+  bool Compute(const std::string& path, std::size_t samples)
+  {
+    this->Reader->SetFileName(path.c_str());
+    this->Reader->Update();
+    if (!medialaxis::PrepareSurfaceMesh(this->Reader->GetOutput(), this->Surface).Ok())
+    {
+      return false;
+    }
+    medialaxis::SamplingOptions sampling;
+    sampling.NumberOfSamples = samples;
+    this->Sites = medialaxis::SampleSurface(this->Surface, sampling);
+    this->Rvd = medialaxis::ComputeRestrictedVoronoi(this->Surface, this->Sites.Points);
+    this->Mat = medialaxis::ComputeVoronoiMedialAxis(
+      this->Surface, this->Sites.Points, this->Sites.TriangleIds, this->Rvd.ConcaveFeature);
+    this->Atlas.Mesh = this->Mat.Mesh;
+    this->Atlas.AtlasOffsets = this->Mat.AtlasOffsets;
+    this->Atlas.AtlasSites = this->Mat.AtlasSites;
+    return true;
+  }
+  medialaxis::AtlasSimplifierResult Simplify(const medialaxis::AtlasSimplifierOptions& options)
+  {
+    return medialaxis::SimplifyMedialAxis(this->Atlas, this->Rvd, this->Sites.Points, options);
+  }
+};
+
 // The initial medial mesh of every shared mesh: no vertex outside the surface
 // (checked by VTK's independent ray casting) and, where SOURCES.md gives the
 // genus, Euler characteristic 1 - genus; then simplified to 1,000 vertices
@@ -188,17 +225,10 @@ TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
     GTEST_SKIP() << "shared meshes not present at " << MeshDir;
   }
   const Expected expected = ReadSourcesTable().at(name);
-  vtkNew<vtkSurfaceFileReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  medialaxis::TriangleMesh surface;
-  ASSERT_TRUE(medialaxis::PrepareSurfaceMesh(reader->GetOutput(), surface).Ok());
-  medialaxis::SamplingOptions sampling;
-  sampling.NumberOfSamples = 10000;
-  const auto sites = medialaxis::SampleSurface(surface, sampling);
-  const auto rvd = medialaxis::ComputeRestrictedVoronoi(surface, sites.Points);
-  const auto mat = medialaxis::ComputeVoronoiMedialAxis(
-    surface, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
+  InitialMedialAxis initial;
+  ASSERT_TRUE(initial.Compute(path, 10000));
+  const medialaxis::TriangleMesh& surface = initial.Surface;
+  const auto& mat = initial.Mat;
   const auto& mesh = mat.Mesh;
   ASSERT_GT(mesh.Centers.size(), 0u);
   EXPECT_TRUE(medialaxis::ValidateMedialMesh(mesh).IsValid());
@@ -212,7 +242,7 @@ TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
   cloud->SetPoints(points);
   vtkNew<vtkSelectEnclosedPoints> enclosed;
   enclosed->SetInputData(cloud);
-  enclosed->SetSurfaceData(reader->GetOutput());
+  enclosed->SetSurfaceData(initial.Reader->GetOutput());
   enclosed->Update();
   // VTK's ray casting has a tolerance; vertices it calls outside are checked
   // again with the exact generalised winding number of the surface.
@@ -250,14 +280,10 @@ TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
   // Simplified to 1,000 vertices: still a valid medial mesh with the same
   // topology (the link condition guards every collapse by default), except
   // that each face merge closes one spurious tetrahedral bubble (chi - 1).
-  medialaxis::AtlasMedialMesh initial;
-  initial.Mesh = mesh;
-  initial.AtlasOffsets = mat.AtlasOffsets;
-  initial.AtlasSites = mat.AtlasSites;
   medialaxis::AtlasSimplifierOptions options;
   options.TargetNumberOfVertices = 1000;
   options.PreserveSharpFeatures = expected.Cad;
-  const auto simplified = medialaxis::SimplifyMedialAxis(initial, rvd, sites.Points, options);
+  const auto simplified = initial.Simplify(options);
   const auto& small = simplified.Medial.Mesh;
   EXPECT_EQ(small.Centers.size(), 1000u) << name;
   EXPECT_TRUE(medialaxis::ValidateMedialMesh(small).IsValid())
@@ -414,25 +440,13 @@ TEST(SharedMeshFeatureSnaps, ZeroRadiusSpheresStayOnTheSurface)
     {
       GTEST_SKIP() << "shared meshes not present at " << MeshDir;
     }
-    vtkNew<vtkSurfaceFileReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    medialaxis::TriangleMesh surface;
-    ASSERT_TRUE(medialaxis::PrepareSurfaceMesh(reader->GetOutput(), surface).Ok());
-    medialaxis::SamplingOptions sampling;
-    sampling.NumberOfSamples = 50000;
-    const auto sites = medialaxis::SampleSurface(surface, sampling);
-    const auto rvd = medialaxis::ComputeRestrictedVoronoi(surface, sites.Points);
-    const auto mat = medialaxis::ComputeVoronoiMedialAxis(
-      surface, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
-    medialaxis::AtlasMedialMesh initial;
-    initial.Mesh = mat.Mesh;
-    initial.AtlasOffsets = mat.AtlasOffsets;
-    initial.AtlasSites = mat.AtlasSites;
+    InitialMedialAxis initial;
+    ASSERT_TRUE(initial.Compute(path, 50000));
+    const medialaxis::TriangleMesh& surface = initial.Surface;
     medialaxis::AtlasSimplifierOptions options;
-    options.TargetNumberOfVertices = mat.Mesh.Centers.size(); // snaps, no collapse
+    options.TargetNumberOfVertices = initial.Mat.Mesh.Centers.size(); // snaps, no collapse
     options.PreserveSharpFeatures = true;
-    const auto snapped = medialaxis::SimplifyMedialAxis(initial, rvd, sites.Points, options);
+    const auto snapped = initial.Simplify(options);
     const auto& mesh = snapped.Medial.Mesh;
     const auto box = medialaxis::BoundingBox(surface.Points);
     const double diagonal = std::sqrt(medialaxis::Distance2(box.second, box.first));

@@ -684,8 +684,8 @@ bool MedialEdgeCollapse::MoveKeepsValid(
 // Folds left after the urgent collapses around forced snaps (see Prepare):
 // every collapse may only keep or lower the folds around it, so nothing
 // else removes them. Collapses an edge of each folded pair of triangles, the
-// cheapest that leaves fewer folds around it, while vertices above `target`
-// remain (Run keeps some in reserve for this).
+// cheapest that leaves fewer folds around it (none above MaximumCost), while
+// vertices above `target` remain (Run keeps some in reserve for this).
 void MedialEdgeCollapse::CollapseFolds(std::size_t target)
 {
   CollapseScratch& scratch = this->Scratch;
@@ -718,7 +718,7 @@ void MedialEdgeCollapse::CollapseFolds(std::size_t target)
           {
             BatchItem item;
             item.Taken = this->MakeCandidate(std::min(w, n), std::max(w, n), scratch);
-            if (item.Taken.Cost < HUGE_VAL)
+            if (item.Taken.Cost < HUGE_VAL && item.Taken.Cost <= this->Options.MaximumCost)
             {
               tries.push_back(std::move(item));
             }

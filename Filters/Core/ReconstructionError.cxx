@@ -440,12 +440,13 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
   };
   // `hint` carries the burying primitive from one piece to the next of the
   // same primitive (neighbouring pieces are mostly buried by the same one).
-  auto buried = [&](const PrimitiveRef& ref, const Point3& x, double g, std::uint32_t& hint)
+  // The primitive's own neighbours are not tried first, unlike for
+  // candidates: the support-function tests above already left out what they
+  // bury (on the bunny, 5,000 spheres, they certified no ball piece and 1%
+  // of band pieces, for a third of the evaluations).
+  auto buried = [&](const Point3& x, double g, std::uint32_t& hint)
   {
-    Index vertices[3];
-    const int count = PrimitiveVertices(envelope, ref, vertices);
-    const std::uint32_t by =
-      envelope.FindBurying(x, g + tol, vertices, count, hint, BurialSearchItems);
+    const std::uint32_t by = envelope.FindBurying(x, g + tol, nullptr, 0, hint, BurialSearchItems);
     hint = by == MedialEnvelope::NoBurial ? hint : by;
     return by != MedialEnvelope::NoBurial;
   };
@@ -474,8 +475,7 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
           for (std::size_t k = 0; k < coarse.size(); ++k)
           {
             if (!supports(list, coarse[k]) ||
-              buried(
-                ref, s.Center + s.Radius * coarse[k].Centre, s.Radius * coarse[k].Radius, hint))
+              buried(s.Center + s.Radius * coarse[k].Centre, s.Radius * coarse[k].Radius, hint))
             {
               continue;
             }
@@ -527,7 +527,7 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
               {
                 const double s0 = double(sl) / Slices, s1 = double(sl + 1) / Slices;
                 const double g = 0.5 * (s1 - s0) * slant + 0.5 * (t1 - t0) * rhoMax;
-                if (!buried(ref, BandPoint(c, 0.5 * (s0 + s1), 0.5 * (t0 + t1)), g, hint))
+                if (!buried(BandPoint(c, 0.5 * (s0 + s1), 0.5 * (t0 + t1)), g, hint))
                 {
                   out.push_back({ ref, 0, s0, s1, t0, t1 });
                 }

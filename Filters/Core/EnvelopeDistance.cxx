@@ -334,6 +334,76 @@ void MedialEnvelope::BuildLeafParts()
       }
     }
   }
+  this->BuildLeafBlocks();
+}
+
+void MedialEnvelope::BuildLeafBlocks()
+{
+  const auto& nodes = this->Tree.GetNodes();
+  this->RoundBlocks.clear();
+  this->SlabBlocks.clear();
+  const double inf = Infinity;
+  // Padding lanes, whose value is +infinity at every point: a ball of radius
+  // -infinity; a slab interior with offsets -infinity.
+  const double roundPadding[pairs::RoundFields] = { 0, 0, 0, -inf, 0, 0, 0, 1, 0, inf, 0, 0, 0,
+    -inf };
+  double slabPadding[pairs::SlabFields] = {};
+  slabPadding[12] = slabPadding[13] = -inf;
+  slabPadding[14] = 1.0;
+  // Appends records [begin, end) as blocks of two, each record's fields
+  // given by fields(position, out).
+  auto append = [&](std::vector<double>& blocks, std::uint32_t begin, std::uint32_t end, int count,
+                  const double* padding, auto&& fields)
+  {
+    double record[pairs::SlabFields];
+    for (std::uint32_t i = begin; i < end; i += 2)
+    {
+      const std::size_t at = blocks.size();
+      blocks.resize(at + 2 * count);
+      for (std::uint32_t lane = 0; lane < 2; ++lane)
+      {
+        const double* d = padding;
+        if (i + lane < end)
+        {
+          fields(i + lane, record);
+          d = record;
+        }
+        for (int f = 0; f < count; ++f)
+        {
+          blocks[at + 2 * f + lane] = d[f];
+        }
+      }
+    }
+  };
+  // Spheres (and nested cones) become cones with a zero axis, sin 1 and
+  // cos 0, which always take the C0 cap: the same value.
+  auto round = [&](std::uint32_t position, double* out)
+  {
+    const Compact& k = this->Records[position];
+    std::copy_n(k.D, pairs::RoundFields, out);
+    if (k.Kind == 0)
+    {
+      const double sphere[pairs::RoundFields] = { k.D[0], k.D[1], k.D[2], k.D[3], 0, 0, 0, 1, 0,
+        inf, k.D[0], k.D[1], k.D[2], k.D[3] };
+      std::copy_n(sphere, pairs::RoundFields, out);
+    }
+  };
+  auto slab = [&](std::uint32_t position, double* out)
+  { std::copy_n(this->Records[position].D, pairs::SlabFields, out); };
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+  {
+    const BoxTree::Node& node = nodes[n];
+    LeafParts& parts = this->Leaves[n];
+    if (node.Count == 0)
+    {
+      continue;
+    }
+    const std::uint32_t split = node.Begin + parts.Split, end = node.Begin + node.Count;
+    parts.Round = static_cast<std::uint32_t>(this->RoundBlocks.size());
+    append(this->RoundBlocks, node.Begin, split, pairs::RoundFields, roundPadding, round);
+    parts.Slab = static_cast<std::uint32_t>(this->SlabBlocks.size());
+    append(this->SlabBlocks, split, end, pairs::SlabFields, slabPadding, slab);
+  }
 }
 
 void MedialEnvelope::BuildSheetPlanes()
@@ -366,7 +436,7 @@ void MedialEnvelope::BuildSheetPlanes()
     return 3;
   };
   this->NodePlanes.assign(
-    nodes.size(), SheetPlanes{ { { 0, 0, 0 }, { 0, 0, 0 } }, { Infinity, Infinity } });
+    nodes.size(), SheetPlanes{ { { 0, 0 }, { 0, 0 }, { 0, 0 } }, { Infinity, Infinity } });
   for (std::size_t n = 0; n < nodes.size(); ++n)
   {
     // Side normals of the slabs, each pair oriented like the first one.
@@ -407,7 +477,10 @@ void MedialEnvelope::BuildSheetPlanes()
       }
       // Rounding of u . x: a relative margin keeps the half-space containing.
       h += 1e-12 * (std::abs(h) + this->Diagonal());
-      std::copy(u.begin(), u.end(), planes.U[side]);
+      for (int c = 0; c < 3; ++c)
+      {
+        planes.U[c][side] = u[c];
+      }
       planes.H[side] = h;
     }
   }
@@ -520,14 +593,14 @@ struct SignedBound
   const BoxTree::Node* First;
   const MedialEnvelope::Dop* Dops;
   const MedialEnvelope::SheetPlanes* Planes;
-  Point3 P;
+  pairs::Query P;
   double T[MedialEnvelope::Dop::K];
   SignedBound(const Point3& p, const BoxTree::Node* first, const MedialEnvelope::Dop* dops,
     const MedialEnvelope::SheetPlanes* planes)
     : First(first)
     , Dops(dops)
     , Planes(planes)
-    , P(p)
+    , P(p.data())
   {
     MedialEnvelope::Dop::Project(p, this->T);
   }
@@ -535,15 +608,49 @@ struct SignedBound
   {
     const std::size_t i = &n - this->First;
     const MedialEnvelope::SheetPlanes& planes = this->Planes[i];
-    double b = this->Dops[i].Bound(this->T);
-    for (int side = 0; side < 2; ++side)
-    {
-      const double* u = planes.U[side];
-      b = std::max(b, u[0] * this->P[0] + u[1] * this->P[1] + u[2] * this->P[2] - planes.H[side]);
-    }
-    return b;
+    // Both sides' plane values at once, in the scalar order of operations.
+    const pairs::Lanes sides = pairs::Load(planes.U[0]) * this->P.X +
+      pairs::Load(planes.U[1]) * this->P.Y + pairs::Load(planes.U[2]) * this->P.Z -
+      pairs::Load(planes.H);
+    const MedialEnvelope::Dop& dop = this->Dops[i];
+    return pairs::Largest(
+      pairs::Max(pairs::HullBound<MedialEnvelope::Dop::K>(this->T, dop.Lo, dop.Hi), sides));
   }
 };
+}
+
+template <typename Visit>
+bool MedialEnvelope::ScanRound(const LeafParts& parts, std::uint32_t begin, std::uint32_t end,
+  const pairs::Query& query, Visit&& visit) const
+{
+  const double* block = this->RoundBlocks.data() + parts.Round;
+  for (std::uint32_t i = begin; i < end; i += 2, block += 2 * pairs::RoundFields)
+  {
+    double values[2];
+    pairs::RoundValues(block, query, values);
+    if (visit(i, values[0]) || (i + 1 < end && visit(i + 1, values[1])))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+template <typename Visit>
+bool MedialEnvelope::ScanSlabs(const LeafParts& parts, std::uint32_t begin, std::uint32_t end,
+  const pairs::Query& query, Visit&& visit) const
+{
+  const double* block = this->SlabBlocks.data() + parts.Slab;
+  for (std::uint32_t i = begin; i < end; i += 2, block += 2 * pairs::SlabFields)
+  {
+    double values[2];
+    pairs::SlabValues(block, query, values);
+    if (visit(i, values[0]) || (i + 1 < end && visit(i + 1, values[1])))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p, std::uint32_t* warm) const
@@ -565,19 +672,17 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p, std::uin
     }
     const BoxTree::Node* first = this->Tree.GetNodes().data();
     const SignedBound bound(p, first, this->NodeDops.data(), this->NodePlanes.data());
-    auto visit = [&](std::uint32_t begin, std::uint32_t end)
+    const pairs::Query query(p.data());
+    auto keep = [&](std::uint32_t position, double v)
     {
-      for (std::uint32_t position = begin; position < end; ++position)
+      // Ties go to the lowest index, as in the brute-force loop.
+      if (v < best.Distance || (v == best.Distance && items[position] < bestItem))
       {
-        const double v = CompactValue(records[position].D, records[position].Kind, p);
-        // Ties go to the lowest index, as in the brute-force loop.
-        if (v < best.Distance || (v == best.Distance && items[position] < bestItem))
-        {
-          best.Distance = v;
-          bestItem = items[position];
-          bestPosition = position;
-        }
+        best.Distance = v;
+        bestItem = items[position];
+        bestPosition = position;
       }
+      return false;
     };
     this->Tree.SearchLeaves(
       bound,
@@ -587,7 +692,7 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p, std::uin
         const std::uint32_t split = leaf.Begin + parts.Split, end = leaf.Begin + leaf.Count;
         if (split > leaf.Begin && parts.Balls.Bound(bound.T) < best.Distance)
         {
-          visit(leaf.Begin, split);
+          this->ScanRound(parts, leaf.Begin, split, query, keep);
         }
         // Outside the hull of the slab interiors' regions, their values are
         // at least the distance to it (the hull bound); inside it, a value
@@ -595,7 +700,7 @@ MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p, std::uin
         const double regions = parts.Regions.Bound(bound.T);
         if (end > split && !(regions > 0.0 && regions >= best.Distance))
         {
-          visit(split, end);
+          this->ScanSlabs(parts, split, end, query, keep);
         }
         return false;
       },
@@ -631,28 +736,19 @@ void MedialEnvelope::SearchBurial(const Point3& p, double tolerance, Visit&& vis
   const double cutoff = -tolerance;
   const BoxTree::Node* first = this->Tree.GetNodes().data();
   const SignedBound bound(p, first, this->NodeDops.data(), this->NodePlanes.data());
+  const pairs::Query query(p.data());
   this->Tree.SearchLeaves(
     bound,
     [&](const BoxTree::Node& leaf)
     {
       const LeafParts& parts = this->Leaves[&leaf - first];
       const std::uint32_t split = leaf.Begin + parts.Split, end = leaf.Begin + leaf.Count;
-      auto scan = [&](std::uint32_t begin, std::uint32_t stop)
-      {
-        for (std::uint32_t i = begin; i < stop; ++i)
-        {
-          if (visit(i))
-          {
-            return true;
-          }
-        }
-        return false;
-      };
       // A point strictly buried by a slab interior is in its region, maybe
       // within rounding of the region's side: hence +tolerance.
       return (split > leaf.Begin && parts.Balls.Bound(bound.T) < cutoff &&
-               scan(leaf.Begin, split)) ||
-        (end > split && parts.Regions.Bound(bound.T) < tolerance && scan(split, end));
+               this->ScanRound(parts, leaf.Begin, split, query, visit)) ||
+        (end > split && parts.Regions.Bound(bound.T) < tolerance &&
+          this->ScanSlabs(parts, split, end, query, visit));
     },
     cutoff);
 }
@@ -665,9 +761,9 @@ bool MedialEnvelope::StrictlyInside(const Point3& p, double tolerance) const
   {
     const Compact* records = this->Records.data();
     this->SearchBurial(p, tolerance,
-      [&](std::uint32_t position)
+      [&](std::uint32_t, double value)
       {
-        found = CompactValue(records[position].D, records[position].Kind, p) < cutoff;
+        found = value < cutoff;
         return found;
       });
   }
@@ -727,9 +823,9 @@ std::uint32_t MedialEnvelope::FindBurying(const Point3& p, double tolerance, con
   {
     std::size_t evaluated = 0;
     this->SearchBurial(p, tolerance,
-      [&](std::uint32_t position)
+      [&](std::uint32_t position, double value)
       {
-        if (buries(position))
+        if (value < cutoff)
         {
           found = position;
           return true;

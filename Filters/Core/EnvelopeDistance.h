@@ -37,6 +37,7 @@
 #include "BoxTree.h"
 #include "MedialMesh.h"
 #include "MedialPrimitives.h"
+#include "PrimitivePairs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -110,13 +111,7 @@ public:
     /// The bound for a point given by its projections.
     double Bound(const double t[K]) const
     {
-      double b = -std::numeric_limits<double>::infinity();
-      for (int k = 0; k < K; ++k)
-      {
-        const double above = t[k] - this->Hi[k], below = this->Lo[k] - t[k];
-        b = std::max(b, std::max(above, below));
-      }
-      return b;
+      return pairs::Largest(pairs::HullBound<K>(t, this->Lo, this->Hi));
     }
   };
 
@@ -125,9 +120,10 @@ public:
   /// sides of a medial sheet). Near a
   /// sheet's envelope they bound far more tightly than the 13 fixed axes.
   /// Without slabs: u = 0, h = +infinity (no bound).
+  /// Stored by component (U[c][side]) so that both sides are one SSE2 step.
   struct SheetPlanes
   {
-    double U[2][3];
+    double U[3][2];
     double H[2];
   };
   /// Builds every primitive of a valid medial mesh. With accelerate = false
@@ -214,7 +210,8 @@ private:
   double TraceExit(const Point3& p, const Point3& direction, double limit) const;
   void BuildSheetPlanes();
   void BuildLeafParts();
-  // Tree search for burial tests (visit(position) returns true to stop):
+  void BuildLeafBlocks();
+  // Tree search for burial tests (visit(position, value) returns true to stop):
   // in each leaf, balls and cones are looked at only if p is inside the hull
   // of their balls, slab interiors only if inside the hull of their regions.
   template <typename Visit>
@@ -253,8 +250,22 @@ private:
   {
     std::uint32_t Split = 0;
     Dop Balls, Regions;
+    // Where the leaf's blocks of two start in RoundBlocks and SlabBlocks.
+    std::uint32_t Round = 0, Slab = 0;
   };
   std::vector<LeafParts> Leaves;
+  // The leaves' records again, in blocks of two field by field for the
+  // paired evaluation of their scans (PrimitivePairs.h); a leaf part of odd
+  // size ends with a padding lane whose value is +infinity.
+  std::vector<double> RoundBlocks, SlabBlocks;
+  // Values of the records [begin, end) of leaf part `parts` at p, in order,
+  // as visit(position, value); stops when visit returns true.
+  template <typename Visit>
+  bool ScanRound(const LeafParts& parts, std::uint32_t begin, std::uint32_t end,
+    const pairs::Query& query, Visit&& visit) const;
+  template <typename Visit>
+  bool ScanSlabs(const LeafParts& parts, std::uint32_t begin, std::uint32_t end,
+    const pairs::Query& query, Visit&& visit) const;
   std::vector<double> ActiveRadius; // largest radius
   BoxTree Tree;
   bool Accelerate;

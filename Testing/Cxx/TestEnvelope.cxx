@@ -557,6 +557,13 @@ MedialMesh WavySheet()
   m.Edges.push_back({ n - 1, static_cast<Index>(m.Centers.size() - 1) });
   m.Centers.push_back({ -0.6, -0.6, 0.5 });
   m.Radii.push_back(0.15);
+  // A cone whose small ball is inside the big one (it evaluates as a ball).
+  m.Centers.push_back({ 1.5, 0.9, 0.2 });
+  m.Radii.push_back(0.3);
+  m.Centers.push_back({ 1.55, 0.92, 0.2 });
+  m.Radii.push_back(0.1);
+  m.Edges.push_back(
+    { static_cast<Index>(m.Centers.size() - 2), static_cast<Index>(m.Centers.size() - 1) });
   return m;
 }
 }
@@ -565,6 +572,9 @@ MedialMesh WavySheet()
 // change a result: the accelerated queries equal brute force over every
 // primitive on a sheet of heavily overlapping balls, at random points and at
 // points of the primitive surfaces (where the union's boundary tests run).
+// The sheet has every kind of primitive (an isolated ball, a cone, a nested
+// cone, slabs), so the leaves' paired evaluation is checked bit for bit
+// against the one-by-one values of the brute force.
 TEST(EnvelopeDistance, AcceleratedQueriesMatchBruteForceOnASheet)
 {
   const MedialMesh sheet = WavySheet();

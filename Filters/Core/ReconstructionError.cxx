@@ -280,6 +280,7 @@ struct Piece
   PrimitiveRef Ref;
   int Side;
   double A0, A1, B0, B1;
+  double Area = 0.0;
 };
 
 // The medial vertices of a primitive: its neighbours bury it first.
@@ -430,6 +431,12 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
     for (const Constraint& c : list)
     {
       const double cosA = std::clamp(Dot(cell.Centre, c.Direction), -1.0, 1.0);
+      // cos(a + Radius) <= cos a: most constraints are met at the centre
+      // already, without the square root.
+      if (cosA <= c.Sigma + 1e-12)
+      {
+        continue;
+      }
       if (cosA > -cell.CosRadius &&
         cosA * cell.CosRadius - std::sqrt(1.0 - cosA * cosA) * cell.SinRadius > c.Sigma + 1e-12)
       {
@@ -451,6 +458,36 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
     return by != MedialEnvelope::NoBurial;
   };
 
+  // The area of a piece (computed in the parallel pass).
+  auto pieceArea = [&](const Piece& p)
+  {
+    double area = 0.0;
+    switch (p.Ref.Kind)
+    {
+      case PrimitiveKind::Sphere:
+      {
+        const double r = envelope.Spheres()[p.Ref.Id].Radius;
+        area = r * r * (p.A1 - p.A0) * (p.B1 - p.B0);
+        break;
+      }
+      case PrimitiveKind::Cone:
+      {
+        const ConePrimitive& c = envelope.Cones()[p.Ref.Id];
+        const double slant = c.Length * c.CosPhi;
+        const double rho0 = c.R[0] * c.CosPhi, k = (c.R[1] - c.R[0]) * c.CosPhi;
+        area =
+          (p.B1 - p.B0) * slant * (rho0 * (p.A1 - p.A0) + 0.5 * k * (p.A1 * p.A1 - p.A0 * p.A0));
+        break;
+      }
+      default:
+      {
+        const auto t = SlabTangentTriangle(envelope.Slabs()[p.Ref.Id], p.Side);
+        area = 0.5 * Norm(Cross(t[1] - t[0], t[2] - t[0]));
+        break;
+      }
+    }
+    return area;
+  };
   // Pieces per primitive, in parallel; concatenated in primitive order.
   const std::size_t nc = edges.size(), nf = envelope.SlabFaces().size();
   std::vector<std::vector<Piece>> perPrimitive(nv + nc + nf);
@@ -519,10 +556,15 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
           const double rhoMax = std::max(c.R[0], c.R[1]) * c.CosPhi;
           for (int w = 0; w < Wedges; ++w)
           {
-            const Intervals wedge =
-              Intersect(allowed, { { TwoPi * w / Wedges, TwoPi * (w + 1) / Wedges } });
-            for (const auto& [t0, t1] : wedge)
+            // The allowed angles within the wedge (as Intersect, in place).
+            const double w0 = TwoPi * w / Wedges, w1 = TwoPi * (w + 1) / Wedges;
+            for (const auto& [a0, a1] : allowed)
             {
+              const double t0 = std::max(a0, w0), t1 = std::min(a1, w1);
+              if (!(t0 < t1))
+              {
+                continue;
+              }
               for (int sl = 0; sl < Slices; ++sl)
               {
                 const double s0 = double(sl) / Slices, s1 = double(sl + 1) / Slices;
@@ -546,40 +588,27 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
             }
           }
         }
+        for (Piece& p : out)
+        {
+          p.Area = pieceArea(p);
+        }
       }
     });
   PieceSet set;
   std::vector<double> cdf;
+  std::size_t count = 0;
+  for (const auto& list : perPrimitive)
+  {
+    count += list.size();
+  }
+  set.Pieces.reserve(count);
+  cdf.reserve(count);
   double total = 0.0;
   for (const auto& list : perPrimitive)
   {
     for (const Piece& p : list)
     {
-      double area = 0.0;
-      switch (p.Ref.Kind)
-      {
-        case PrimitiveKind::Sphere:
-        {
-          const double r = envelope.Spheres()[p.Ref.Id].Radius;
-          area = r * r * (p.A1 - p.A0) * (p.B1 - p.B0);
-          break;
-        }
-        case PrimitiveKind::Cone:
-        {
-          const ConePrimitive& c = envelope.Cones()[p.Ref.Id];
-          const double slant = c.Length * c.CosPhi;
-          const double rho0 = c.R[0] * c.CosPhi, k = (c.R[1] - c.R[0]) * c.CosPhi;
-          area =
-            (p.B1 - p.B0) * slant * (rho0 * (p.A1 - p.A0) + 0.5 * k * (p.A1 * p.A1 - p.A0 * p.A0));
-          break;
-        }
-        default:
-        {
-          const auto t = SlabTangentTriangle(envelope.Slabs()[p.Ref.Id], p.Side);
-          area = 0.5 * Norm(Cross(t[1] - t[0], t[2] - t[0]));
-          break;
-        }
-      }
+      const double area = p.Area;
       if (area > 0.0)
       {
         total += area;

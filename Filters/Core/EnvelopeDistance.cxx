@@ -619,15 +619,18 @@ struct SignedBound
 };
 }
 
-template <typename Visit>
-bool MedialEnvelope::ScanRound(const LeafParts& parts, std::uint32_t begin, std::uint32_t end,
-  const pairs::Query& query, Visit&& visit) const
+namespace
 {
-  const double* block = this->RoundBlocks.data() + parts.Round;
-  for (std::uint32_t i = begin; i < end; i += 2, block += 2 * pairs::RoundFields)
+// Values of the records [begin, end) stored in blocks of two from `block`
+// on, in order, as visit(position, value); true when visit stopped it.
+template <int Fields, typename Values, typename Visit>
+bool ScanBlocks(const double* block, std::uint32_t begin, std::uint32_t end,
+  const pairs::Query& query, Values&& pairValues, Visit&& visit)
+{
+  for (std::uint32_t i = begin; i < end; i += 2, block += 2 * Fields)
   {
     double values[2];
-    pairs::RoundValues(block, query, values);
+    pairValues(block, query, values);
     if (visit(i, values[0]) || (i + 1 < end && visit(i + 1, values[1])))
     {
       return true;
@@ -635,22 +638,28 @@ bool MedialEnvelope::ScanRound(const LeafParts& parts, std::uint32_t begin, std:
   }
   return false;
 }
+}
+
+template <typename Visit>
+bool MedialEnvelope::ScanRound(const LeafParts& parts, std::uint32_t begin, std::uint32_t end,
+  const pairs::Query& query, Visit&& visit) const
+{
+  return ScanBlocks<pairs::RoundFields>(
+    this->RoundBlocks.data() + parts.Round, begin, end, query,
+    [](const double* block, const pairs::Query& q, double* out)
+    { pairs::RoundValues(block, q, out); },
+    visit);
+}
 
 template <typename Visit>
 bool MedialEnvelope::ScanSlabs(const LeafParts& parts, std::uint32_t begin, std::uint32_t end,
   const pairs::Query& query, Visit&& visit) const
 {
-  const double* block = this->SlabBlocks.data() + parts.Slab;
-  for (std::uint32_t i = begin; i < end; i += 2, block += 2 * pairs::SlabFields)
-  {
-    double values[2];
-    pairs::SlabValues(block, query, values);
-    if (visit(i, values[0]) || (i + 1 < end && visit(i + 1, values[1])))
-    {
-      return true;
-    }
-  }
-  return false;
+  return ScanBlocks<pairs::SlabFields>(
+    this->SlabBlocks.data() + parts.Slab, begin, end, query,
+    [](const double* block, const pairs::Query& q, double* out)
+    { pairs::SlabValues(block, q, out); },
+    visit);
 }
 
 MedialEnvelope::Nearest MedialEnvelope::SignedDistance(const Point3& p, std::uint32_t* warm) const

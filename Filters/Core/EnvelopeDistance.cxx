@@ -768,7 +768,6 @@ bool MedialEnvelope::StrictlyInside(const Point3& p, double tolerance) const
   bool found = false;
   if (this->Accelerate)
   {
-    const Compact* records = this->Records.data();
     this->SearchBurial(p, tolerance,
       [&](std::uint32_t, double value)
       {

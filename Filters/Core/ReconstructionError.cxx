@@ -608,10 +608,9 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
   {
     for (const Piece& p : list)
     {
-      const double area = p.Area;
-      if (area > 0.0)
+      if (p.Area > 0.0)
       {
-        total += area;
+        total += p.Area;
         set.Pieces.push_back(p);
         cdf.push_back(total);
       }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // medial-axis: the Structural MAT of a closed triangle surface from the
 // command line. See PrintHelp() for the options and exit codes.
+#include "HugePageHeap.h"
 #include "MedialMesh.h"
 #include "MedialMeshQuality.h"
 #include "Screenshot.h"
@@ -112,6 +113,10 @@ Options:
                         and (with --error) the Hausdorff distances
   --quiet               no progress bar (it is shown only on a terminal)
   -h, --help            this text
+
+Environment: the tool starts itself again with its heap on transparent huge
+pages (GLIBC_TUNABLES=glibc.malloc.hugetlb=1), a quarter faster where page
+faults are dear (virtual machines); MEDIALAXIS_HUGE_PAGES=0 turns that off.
 
 Exit codes: 0 done; 2 bad arguments; 3 unreadable or invalid input (the
 message names the defect, e.g. an open surface and its boundary edges);
@@ -414,6 +419,7 @@ double PeakMegabytes()
 
 int main(int argc, char** argv)
 {
+  medialaxis::UseHugePageHeap(argv);
   // Errors are reported below, once, in the tool's own words.
   vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);

@@ -17,14 +17,14 @@
 // envelope surface, core), "envelope-vtk" (the same through
 // vtkSlabReconstructor, poly data included) and "error" (reconstruction
 // error with S surface samples and S envelope samples, default 100,000).
-// The heap is on transparent huge pages (HugePageHeap.h) unless
-// MEDIALAXIS_HUGE_PAGES=0; the first line printed says which.
+// The heap is tuned (HeapTuning.h) unless MEDIALAXIS_TUNE_HEAP=0; the
+// first line printed says how.
 #include "AnalyticShapes.h"
 #include "AtlasSimplifier.h"
 #include "BlueNoiseSampler.h"
 #include "EnvelopeDistance.h"
 #include "EnvelopeMesher.h"
-#include "HugePageHeap.h"
+#include "HeapTuning.h"
 #include "MedialMeshQuality.h"
 #include "Parallel.h"
 #include "ReconstructionError.h"
@@ -267,7 +267,7 @@ void PrintStages(const std::string& name, std::size_t triangles, std::size_t sam
 
 int main(int argc, char* argv[])
 {
-  medialaxis::UseHugePageHeap(argv);
+  medialaxis::TuneHeap(argv);
   std::size_t samples = 50000, target = 5000;
   bool cad = false;
   int threads = 0;
@@ -322,9 +322,8 @@ int main(int argc, char* argv[])
   {
     inputs.emplace_back("torus", true);
   }
-  std::printf("heap: %s\n",
-    medialaxis::HugePageHeapRequested() ? "transparent huge pages (glibc.malloc.hugetlb=1)"
-                                        : "default pages");
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  std::printf("heap: %s\n", medialaxis::HeapTuned() ? tunables : "glibc's defaults");
 
   return RunWithThreads(threads,
     [&]

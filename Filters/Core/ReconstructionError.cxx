@@ -604,9 +604,29 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
   set.Pieces.reserve(count);
   cdf.reserve(count);
   double total = 0.0;
-  for (const auto& list : perPrimitive)
+  // Concatenated along a Morton curve through the primitives: candidates,
+  // drawn stratified over the pieces in this order, then come out close to
+  // the ones before them without being sorted (see the candidate loop).
+  const std::vector<std::uint32_t> primitiveOrder = MortonOrder(perPrimitive.size(),
+    [&](std::size_t i)
+    {
+      if (i < nv)
+      {
+        return envelope.Spheres()[i].Center;
+      }
+      if (i < nv + nc)
+      {
+        const auto& e = edges[i - nv];
+        return 0.5 * (envelope.Spheres()[e[0]].Center + envelope.Spheres()[e[1]].Center);
+      }
+      const auto& f = envelope.SlabFaces()[i - nv - nc];
+      return (1.0 / 3.0) *
+        (envelope.Spheres()[f[0]].Center + envelope.Spheres()[f[1]].Center +
+          envelope.Spheres()[f[2]].Center);
+    });
+  for (const std::uint32_t i : primitiveOrder)
   {
-    for (const Piece& p : list)
+    for (const Piece& p : perPrimitive[i])
     {
       if (p.Area > 0.0)
       {
@@ -770,18 +790,16 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
           batchKeys[i] = rng.Uniform();
         }
       });
-    // Tested along a Morton curve: consecutive candidates are close, so a
-    // primitive that buried one is tried first on the next, and they share
-    // cached tree nodes. keep[i] does not depend on that order.
-    const std::vector<std::uint32_t> spatial =
-      MortonOrder(batch, [&](std::size_t i) { return batchPoints[i]; });
+    // Tested in order: consecutive candidates are close (the pieces are in
+    // Morton order), so a primitive that buried one is tried first on the
+    // next, and they share cached tree nodes. keep[i] does not depend on
+    // that order.
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch, 1024),
       [&](const tbb::blocked_range<std::size_t>& r)
       {
         std::uint32_t hint = MedialEnvelope::NoBurial;
-        for (std::size_t k = r.begin(); k < r.end(); ++k)
+        for (std::size_t i = r.begin(); i < r.end(); ++i)
         {
-          const std::uint32_t i = spatial[k];
           // Neighbours next: they bury most rejected candidates.
           Index vertices[3];
           const int count =

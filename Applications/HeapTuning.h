@@ -50,16 +50,20 @@ inline bool HeapTuned()
 }
 
 /// Starts the program again with HeapTunables() added to GLIBC_TUNABLES,
-/// unless the process has heap tunables already (the user's win), or
+/// unless the process has heap tunables already (the user's win), runs
+/// under valgrind or AddressSanitizer (their own allocators), or
 /// MEDIALAXIS_TUNE_HEAP=0. Call first thing in main, before any output;
 /// returns when nothing is to do or the restart failed (the program then
 /// runs with the default heap).
 inline void TuneHeap(char** argv)
 {
-#if defined(__linux__) && defined(__GLIBC__) &&                                                    \
+#if defined(__linux__) && defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) &&                   \
   (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 35))
   const char* wanted = std::getenv("MEDIALAXIS_TUNE_HEAP");
-  if ((wanted != nullptr && std::strcmp(wanted, "0") == 0) || HeapTuned())
+  // Not under valgrind either: the restarted program would leave it.
+  const char* preload = std::getenv("LD_PRELOAD");
+  if ((wanted != nullptr && std::strcmp(wanted, "0") == 0) || HeapTuned() ||
+    (preload != nullptr && std::strstr(preload, "vgpreload") != nullptr))
   {
     return;
   }

@@ -57,7 +57,7 @@ inline bool HeapTuned()
 /// runs with the default heap).
 inline void TuneHeap(char** argv)
 {
-#if defined(__linux__) && defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) &&                   \
+#if defined(__linux__) && defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) &&                  \
   (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 35))
   const char* wanted = std::getenv("MEDIALAXIS_TUNE_HEAP");
   // Not under valgrind either: the restarted program would leave it.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "EnvelopeDistance.h"
 
+#include "PrimitiveQuads.h"
 #include "Vec3.h"
 
 #include <algorithm>
@@ -621,12 +622,35 @@ struct SignedBound
 
 namespace
 {
+// Four lanes where the processor has them (PrimitiveQuads.h), chosen once.
+const quads::BlockValues RoundQuads = quads::RoundBlockValues();
+const quads::BlockValues SlabQuads = quads::SlabBlockValues();
+
 // Values of the records [begin, end) stored in blocks of two from `block`
 // on, in order, as visit(position, value); true when visit stopped it.
+// With `quads`, up to eight blocks are evaluated at a time, four lanes wide.
 template <int Fields, typename Values, typename Visit>
 bool ScanBlocks(const double* block, std::uint32_t begin, std::uint32_t end,
-  const pairs::Query& query, Values&& pairValues, Visit&& visit)
+  const pairs::Query& query, quads::BlockValues quads, Values&& pairValues, Visit&& visit)
 {
+  if (quads != nullptr)
+  {
+    constexpr std::uint32_t Chunk = 16; // records
+    double values[Chunk];
+    for (std::uint32_t first = begin; first < end; first += Chunk, block += Chunk * Fields)
+    {
+      const std::uint32_t last = std::min(end, first + Chunk);
+      quads(block, static_cast<int>((last - first + 1) / 2), query.Point, values);
+      for (std::uint32_t i = first; i < last; ++i)
+      {
+        if (visit(i, values[i - first]))
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
   for (std::uint32_t i = begin; i < end; i += 2, block += 2 * Fields)
   {
     double values[2];
@@ -645,7 +669,7 @@ bool MedialEnvelope::ScanRound(const LeafParts& parts, std::uint32_t begin, std:
   const pairs::Query& query, Visit&& visit) const
 {
   return ScanBlocks<pairs::RoundFields>(
-    this->RoundBlocks.data() + parts.Round, begin, end, query,
+    this->RoundBlocks.data() + parts.Round, begin, end, query, RoundQuads,
     [](const double* block, const pairs::Query& q, double* out)
     { pairs::RoundValues(block, q, out); },
     visit);
@@ -656,7 +680,7 @@ bool MedialEnvelope::ScanSlabs(const LeafParts& parts, std::uint32_t begin, std:
   const pairs::Query& query, Visit&& visit) const
 {
   return ScanBlocks<pairs::SlabFields>(
-    this->SlabBlocks.data() + parts.Slab, begin, end, query,
+    this->SlabBlocks.data() + parts.Slab, begin, end, query, SlabQuads,
     [](const double* block, const pairs::Query& q, double* out)
     { pairs::SlabValues(block, q, out); },
     visit);

@@ -189,14 +189,16 @@ inline Lanes HullBound(const double* t, const double* lo, const double* hi)
   return b;
 }
 
-/// Point p, splatted once per query.
+/// Point p, splatted once per query (and as it is, for other kernels).
 struct Query
 {
   Lanes X, Y, Z;
+  const double* Point;
   explicit Query(const double p[3])
     : X(Splat(p[0]))
     , Y(Splat(p[1]))
     , Z(Splat(p[2]))
+    , Point(p)
   {
   }
 };

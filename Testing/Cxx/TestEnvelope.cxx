@@ -7,6 +7,8 @@
 #include "EnvelopeMesher.h"
 #include "MedialPrimitives.h"
 #include "Parallel.h"
+#include "PrimitivePairs.h"
+#include "PrimitiveQuads.h"
 #include "Random.h"
 #include "ReconstructionError.h"
 #include "TestHelpers.h"
@@ -30,6 +32,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <functional>
 
@@ -638,6 +641,58 @@ TEST(EnvelopeDistance, AcceleratedQueriesMatchBruteForceOnASheet)
   }
   EXPECT_GT(inside, 300u);
   EXPECT_GT(boundary, 50u);
+}
+
+// The four-lane kernels (AVX2, where the processor has it) give the paired
+// kernels' values bit for bit, on blocks of random fields that take every
+// branch (either cap or the side of a cone; either side of a slab, inside
+// or outside its region), for every number of blocks a leaf can have.
+TEST(EnvelopeDistance, FourLaneKernelsMatchThePairedOnes)
+{
+  const quads::BlockValues round = quads::RoundBlockValues(), slab = quads::SlabBlockValues();
+  if (round == nullptr || slab == nullptr)
+  {
+    GTEST_SKIP() << "no AVX2 on this processor: the paired kernels run alone";
+  }
+  Random rng(5);
+  std::size_t compared = 0;
+  for (int trial = 0; trial < 400; ++trial)
+  {
+    const int blocks = 1 + trial % 8;
+    const bool isRound = trial % 2 == 0;
+    const int fields = isRound ? pairs::RoundFields : pairs::SlabFields;
+    std::vector<double> data(static_cast<std::size_t>(2 * fields * blocks));
+    for (double& d : data)
+    {
+      d = 2.0 * rng.Uniform() - 1.0;
+    }
+    const double p[3] = { 2.0 * rng.Uniform() - 1.0, 2.0 * rng.Uniform() - 1.0,
+      2.0 * rng.Uniform() - 1.0 };
+    std::vector<double> wide(static_cast<std::size_t>(2 * blocks));
+    (isRound ? round : slab)(data.data(), blocks, p, wide.data());
+    const pairs::Query query(p);
+    for (int b = 0; b < blocks; ++b)
+    {
+      double two[2];
+      const double* block = data.data() + 2 * fields * b;
+      if (isRound)
+      {
+        pairs::RoundValues(block, query, two);
+      }
+      else
+      {
+        pairs::SlabValues(block, query, two);
+      }
+      for (int lane = 0; lane < 2; ++lane)
+      {
+        EXPECT_EQ(std::memcmp(&two[lane], &wide[2 * b + lane], sizeof(double)), 0)
+          << (isRound ? "round" : "slab") << " block " << b << " lane " << lane << ": " << two[lane]
+          << " against " << wide[2 * b + lane];
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 3600u);
 }
 
 // ---------------------------------------------------------------------------

@@ -4,14 +4,17 @@
 // primitives in runs; and their hull bounds, two axes at a time. The primitives of a leaf are
 // stored in blocks of two, field by field (block[2 f + lane]), so that one SSE2 step (baseline
 // x86-64) serves both. Every lane takes the same operations in the same order as the scalar
-// CompactValue, branch-free: the values are bit-identical to it. Written by hand because no library
-// we use vectorises a mixed distance-function loop like this one; without SSE2 two scalar lanes.
+// CompactValue, branch-free: the values are bit-identical to it (the kernels, shared with the AVX2
+// lanes of PrimitiveQuads.cxx, are in PrimitiveKernels.h). Written by hand because no library we
+// use vectorises a mixed distance-function loop like this one; without SSE2 two scalar lanes.
 #ifndef medialaxis_PrimitivePairs_h
 #define medialaxis_PrimitivePairs_h
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "PrimitiveKernels.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -21,11 +24,8 @@ namespace medialaxis
 {
 namespace pairs
 {
-/// Fields of a round block (spheres and cones, CompactValue kinds 0 and 1):
-/// C0 (3), R0, axis (3), sin phi, cos phi, length cos phi, C1 (3), R1. A
-/// sphere is a cone with a zero axis, sin 1 and cos 0, which always takes the
-/// C0 cap. Slab blocks: the 24 fields of a slab interior's compact record.
-constexpr int RoundFields = 14, SlabFields = 24;
+/// Fields of a round block and of a slab block (see PrimitiveKernels.h).
+constexpr int RoundFields = kernels::RoundFields, SlabFields = kernels::SlabFields;
 
 #if defined(__SSE2__)
 struct Lanes
@@ -209,47 +209,25 @@ inline Lanes Field(const double* block, int f)
   return Load(block + 2 * f);
 }
 
+/// Field f of one block of two, for the kernels of PrimitiveKernels.h.
+struct BlockFields
+{
+  const double* Block;
+  Lanes operator()(int f) const { return Field(this->Block, f); }
+};
+
 /// The values of the two spheres or cones of a round block at p.
 inline void RoundValues(const double* b, const Query& p, double out[2])
 {
-  const Lanes vx = p.X - Field(b, 0), vy = p.Y - Field(b, 1), vz = p.Z - Field(b, 2);
-  const Lanes ax = Field(b, 4), ay = Field(b, 5), az = Field(b, 6);
-  const Lanes a = vx * ax + vy * ay + vz * az;
-  const Lanes wx = vx - a * ax, wy = vy - a * ay, wz = vz - a * az;
-  const Lanes w = Sqrt(wx * wx + wy * wy + wz * wz);
-  const Lanes sinPhi = Field(b, 7), cosPhi = Field(b, 8);
-  const Lanes s = a * cosPhi - w * sinPhi;
-  const Lanes r0 = Field(b, 3);
-  const Lanes cap0 = Sqrt(vx * vx + vy * vy + vz * vz) - r0;
-  const Lanes ux = p.X - Field(b, 10), uy = p.Y - Field(b, 11), uz = p.Z - Field(b, 12);
-  const Lanes cap1 = Sqrt(ux * ux + uy * uy + uz * uz) - Field(b, 13);
-  const Lanes side = a * sinPhi + w * cosPhi - r0;
-  Store(
-    Select(LessEqual(s, Splat(0.0)), cap0, Select(GreaterEqual(s, Field(b, 9)), cap1, side)), out);
+  Store(kernels::RoundValues(BlockFields{ b }, p.X, p.Y, p.Z, Splat(0.0)), out);
 }
 
 /// The values of the two slab interiors of a slab block at p.
 inline void SlabValues(const double* b, const Query& p, double out[2])
 {
-  const Lanes cx = Field(b, 0), cy = Field(b, 1), cz = Field(b, 2);
-  const Lanes dx = p.X - cx, dy = p.Y - cy, dz = p.Z - cz;
-  const Lanes height = dx * Field(b, 3) + dy * Field(b, 4) + dz * Field(b, 5);
-  const Mask upper = GreaterEqual(height, Splat(0.0));
-  const Lanes nx = Select(upper, Field(b, 6), Field(b, 9));
-  const Lanes ny = Select(upper, Field(b, 7), Field(b, 10));
-  const Lanes nz = Select(upper, Field(b, 8), Field(b, 11));
-  const Lanes offset = Select(upper, Field(b, 12), Field(b, 13));
-  const Lanes t = Abs(height) / Field(b, 14);
-  const Lanes vx = (p.X - t * nx) - cx, vy = (p.Y - t * ny) - cy, vz = (p.Z - t * nz) - cz;
-  const Lanes d1 = vx * Field(b, 15) + vy * Field(b, 16) + vz * Field(b, 17);
-  const Lanes d2 = vx * Field(b, 18) + vy * Field(b, 19) + vz * Field(b, 20);
-  const Lanes g12 = Field(b, 22);
-  const Lanes b1 = Field(b, 21) * d1 + g12 * d2;
-  const Lanes b2 = g12 * d1 + Field(b, 23) * d2;
-  const Lanes zero = Splat(0.0);
-  const Mask outside = Less(b1, zero) | Less(b2, zero) | Greater(b1 + b2, Splat(1.0));
-  const Lanes plane = nx * p.X + ny * p.Y + nz * p.Z - offset;
-  Store(Select(outside, Splat(std::numeric_limits<double>::infinity()), plane), out);
+  Store(kernels::SlabValues(BlockFields{ b }, p.X, p.Y, p.Z, Splat(0.0), Splat(1.0),
+          Splat(std::numeric_limits<double>::infinity())),
+    out);
 }
 }
 }

@@ -646,7 +646,8 @@ TEST(EnvelopeDistance, AcceleratedQueriesMatchBruteForceOnASheet)
 // The four-lane kernels (AVX2, where the processor has it) give the paired
 // kernels' values bit for bit, on blocks of random fields that take every
 // branch (either cap or the side of a cone; either side of a slab, inside
-// or outside its region), for every number of blocks a leaf can have.
+// or outside its region) and at exact ties, for every number of blocks a
+// leaf can have.
 TEST(EnvelopeDistance, FourLaneKernelsMatchThePairedOnes)
 {
   const quads::BlockValues round = quads::RoundBlockValues(), slab = quads::SlabBlockValues();
@@ -666,8 +667,16 @@ TEST(EnvelopeDistance, FourLaneKernelsMatchThePairedOnes)
     {
       d = 2.0 * rng.Uniform() - 1.0;
     }
-    const double p[3] = { 2.0 * rng.Uniform() - 1.0, 2.0 * rng.Uniform() - 1.0,
+    double p[3] = { 2.0 * rng.Uniform() - 1.0, 2.0 * rng.Uniform() - 1.0,
       2.0 * rng.Uniform() - 1.0 };
+    if (trial % 4 < 2)
+    {
+      // At the first record's centre: the ties (s = 0 of a cone, height 0
+      // of a slab) where a comparison's strictness decides.
+      p[0] = data[0];
+      p[1] = data[2];
+      p[2] = data[4];
+    }
     std::vector<double> wide(static_cast<std::size_t>(2 * blocks));
     (isRound ? round : slab)(data.data(), blocks, p, wide.data());
     const pairs::Query query(p);

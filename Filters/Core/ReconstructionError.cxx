@@ -9,10 +9,13 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 namespace medialaxis
 {
@@ -708,8 +711,24 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   const auto box = BoundingBox(surface.Points);
   result.Diagonal = Norm(box.second - box.first);
   auto clock = std::chrono::steady_clock::now();
+  // Two serial builds run in the background while the other threads work:
+  // the surface's triangle hierarchy (for envelope -> surface) during
+  // surface -> envelope, and the tree over the envelope samples (for the
+  // inside bounds) during envelope -> surface. Waited for before anything
+  // they use is moved or destroyed, and by the guard on other ways out.
+  std::optional<TriangleLocator> locator;
+  std::optional<KdTree> boundary;
+  tbb::task_group background;
+  struct WaitOnExit
+  {
+    tbb::task_group& Tasks;
+    ~WaitOnExit() { this->Tasks.wait(); }
+  } waitOnExit{ background };
 
   // Surface -> envelope, at the vertices (normals: area-weighted) and samples.
+  std::vector<Point3> samples, sampleNormals;
+  SampleTriangleMesh(surface, options.NumberOfSamples, options.RandomSeed, samples, sampleNormals);
+  background.run([&] { locator.emplace(surface); });
   const std::size_t nv = surface.Points.size();
   std::vector<Point3> vertexNormals(nv, Point3{ 0, 0, 0 });
   for (const Triangle& t : surface.Triangles)
@@ -721,8 +740,6 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
       vertexNormals[v] = vertexNormals[v] + n;
     }
   }
-  std::vector<Point3> samples, sampleNormals;
-  SampleTriangleMesh(surface, options.NumberOfSamples, options.RandomSeed, samples, sampleNormals);
   const std::size_t ns = samples.size();
   std::vector<MedialEnvelope::BoundaryDistance> distances(nv + ns);
   const std::vector<std::uint32_t> surfaceOrder = MortonOrder(
@@ -733,14 +750,21 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   {
     std::uint32_t Position = MedialEnvelope::NoPrimitive;
   };
-  if (!ForEachChunked<Warm>(nv + ns, 0.0, 0.6, options.Progress,
+  // Isolated, so that this thread, waiting for its loops, does not take up
+  // the background task and leave the loops to the others.
+  const bool surfaceDone = tbb::this_task_arena::isolate(
+    [&]
+    {
+      return ForEachChunked<Warm>(nv + ns, 0.0, 0.6, options.Progress,
         [&](std::size_t k, Warm& warm)
         {
           const std::size_t i = surfaceOrder[k];
           distances[i] = i < nv
             ? envelope.DistanceToBoundary(surface.Points[i], &vertexNormals[i], &warm.Position)
             : envelope.DistanceToBoundary(samples[i - nv], &sampleNormals[i - nv], &warm.Position);
-        }))
+        });
+    });
+  if (!surfaceDone)
   {
     result.Aborted = true;
     return result;
@@ -844,12 +868,22 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
     }
   }
   result.CandidatesSeconds = Lap(clock);
-  const TriangleLocator locator(surface);
-  result.EnvelopeSampleDistance.resize(result.EnvelopeSamples.size());
-  if (!ForEachChunked(result.EnvelopeSamples.size(), 0.8, 0.2, options.Progress,
-        [&](std::size_t i, int)
-        { result.EnvelopeSampleDistance[i] = locator.Distance(result.EnvelopeSamples[i]); }))
+  background.wait();
+  if (!result.EnvelopeSamples.empty())
   {
+    background.run([&] { boundary.emplace(result.EnvelopeSamples); });
+  }
+  result.EnvelopeSampleDistance.resize(result.EnvelopeSamples.size());
+  const bool envelopeDone = tbb::this_task_arena::isolate(
+    [&]
+    {
+      return ForEachChunked(result.EnvelopeSamples.size(), 0.8, 0.2, options.Progress,
+        [&](std::size_t i, int)
+        { result.EnvelopeSampleDistance[i] = locator->Distance(result.EnvelopeSamples[i]); });
+    });
+  if (!envelopeDone)
+  {
+    background.wait();
     result.Aborted = true;
     return result;
   }
@@ -861,9 +895,9 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   // exact carry an upper bound from projections and ray traces, which can be
   // far off where many primitives meet. Every envelope sample is a point of
   // that boundary, so the nearest one bounds the distance from above too.
-  if (!result.EnvelopeSamples.empty())
+  background.wait();
+  if (boundary)
   {
-    const KdTree boundary(result.EnvelopeSamples);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv + ns, 1024),
       [&](const tbb::blocked_range<std::size_t>& r)
       {
@@ -873,7 +907,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
           if (d.Inside && !d.Exact)
           {
             const Point3& p = i < nv ? surface.Points[i] : samples[i - nv];
-            const double nearest = Norm(p - result.EnvelopeSamples[boundary.Nearest(p)]);
+            const double nearest = Norm(p - result.EnvelopeSamples[boundary->Nearest(p)]);
             d.Upper = std::max(d.Lower, std::min(d.Upper, nearest));
           }
         }

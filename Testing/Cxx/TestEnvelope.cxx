@@ -418,6 +418,37 @@ TEST(ReconstructionError, CapsuleBelowATenthPercent)
   EXPECT_EQ(r.SurfaceToEnvelope.Samples, capsule.Points.size() + 100000);
 }
 
+// Aborting at any point (surface -> envelope, candidates, envelope ->
+// surface) returns at once, with the builds running in the background
+// finished first; a run not aborted gives the same values as before.
+TEST(ReconstructionError, AbortsAtEveryStage)
+{
+  const TriangleMesh capsule = MakeCapsule(0.5, 2.0, 32);
+  const MedialEnvelope envelope(Capsule(0.5, 1.0));
+  const ReconstructionErrorResult full = ComputeReconstructionError(capsule, envelope);
+  ASSERT_FALSE(full.Aborted);
+  for (const double stopAt : { 0.0, 0.3, 0.7, 0.85 })
+  {
+    ReconstructionErrorOptions options;
+    double last = -1.0;
+    options.Progress = [&](double fraction)
+    {
+      last = fraction;
+      return fraction <= stopAt;
+    };
+    const ReconstructionErrorResult r = ComputeReconstructionError(capsule, envelope, options);
+    EXPECT_TRUE(r.Aborted) << "stop at " << stopAt;
+    EXPECT_GT(last, stopAt);
+    EXPECT_LE(last, stopAt + 0.2) << "went on after the abort";
+  }
+  ReconstructionErrorOptions options;
+  options.Progress = [](double) { return true; };
+  const ReconstructionErrorResult r = ComputeReconstructionError(capsule, envelope, options);
+  EXPECT_FALSE(r.Aborted);
+  EXPECT_EQ(r.Hausdorff, full.Hausdorff);
+  EXPECT_EQ(r.EnvelopeSamples, full.EnvelopeSamples);
+}
+
 TEST(ReconstructionError, WrongRadiusGivesTheRadiusDifference)
 {
   const TriangleMesh capsule = MakeCapsule(0.5, 2.0, 64);

@@ -595,18 +595,12 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
         {
           p.Area = pieceArea(p);
         }
+        out.erase(
+          std::remove_if(out.begin(), out.end(), [](const Piece& p) { return !(p.Area > 0.0); }),
+          out.end());
       }
     });
   PieceSet set;
-  std::vector<double> cdf;
-  std::size_t count = 0;
-  for (const auto& list : perPrimitive)
-  {
-    count += list.size();
-  }
-  set.Pieces.reserve(count);
-  cdf.reserve(count);
-  double total = 0.0;
   // Concatenated along a Morton curve through the primitives: candidates,
   // drawn stratified over the pieces in this order, then come out close to
   // the ones before them without being sorted (see the candidate loop).
@@ -627,17 +621,29 @@ PieceSet EnvelopePieces(const MedialEnvelope& envelope)
         (envelope.Spheres()[f[0]].Center + envelope.Spheres()[f[1]].Center +
           envelope.Spheres()[f[2]].Center);
     });
-  for (const std::uint32_t i : primitiveOrder)
+  // Copied in parallel to their places; the cumulative areas are summed in
+  // order, as the sampling's distribution must not depend on the threads.
+  std::vector<std::size_t> offsets(primitiveOrder.size() + 1, 0);
+  for (std::size_t k = 0; k < primitiveOrder.size(); ++k)
   {
-    for (const Piece& p : perPrimitive[i])
+    offsets[k + 1] = offsets[k] + perPrimitive[primitiveOrder[k]].size();
+  }
+  set.Pieces.resize(offsets.back());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, primitiveOrder.size(), 256),
+    [&](const tbb::blocked_range<std::size_t>& r)
     {
-      if (p.Area > 0.0)
+      for (std::size_t k = r.begin(); k < r.end(); ++k)
       {
-        total += p.Area;
-        set.Pieces.push_back(p);
-        cdf.push_back(total);
+        const auto& list = perPrimitive[primitiveOrder[k]];
+        std::copy(list.begin(), list.end(), set.Pieces.begin() + offsets[k]);
       }
-    }
+    });
+  std::vector<double> cdf(set.Pieces.size());
+  double total = 0.0;
+  for (std::size_t i = 0; i < cdf.size(); ++i)
+  {
+    total += set.Pieces[i].Area;
+    cdf[i] = total;
   }
   set.Cdf.Build(std::move(cdf));
   return set;

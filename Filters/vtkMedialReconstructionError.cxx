@@ -9,6 +9,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -63,6 +64,11 @@ void AddStatistics(vtkPolyData* output, const ReconstructionErrorResult& r)
   AddFieldValue(output, "EnvelopeCandidates", static_cast<long long>(r.EnvelopeCandidates));
   AddFieldValue(output, "InsidePoints", static_cast<long long>(r.InsidePoints));
   AddFieldValue(output, "UncertifiedInsidePoints", static_cast<long long>(r.UncertifiedPoints));
+  vtkNew<vtkDoubleArray> farthest;
+  farthest->SetName("FarthestEnvelopePoint");
+  farthest->SetNumberOfComponents(3);
+  farthest->InsertNextTuple(r.EnvelopeFarthestPoint.data());
+  output->GetFieldData()->AddArray(farthest);
 }
 }
 
@@ -129,6 +135,7 @@ int vtkMedialReconstructionError::RequestData(
   options.NumberOfSamples = static_cast<std::size_t>(this->NumberOfSamples);
   options.NumberOfEnvelopeSamples = static_cast<std::size_t>(this->NumberOfEnvelopeSamples);
   options.RandomSeed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->RandomSeed));
+  options.MaximumSearches = static_cast<std::size_t>(this->MaximumSearches);
   options.Progress = [this](double f)
   {
     this->UpdateProgress(0.05 + 0.9 * f);
@@ -206,6 +213,7 @@ void vtkMedialReconstructionError::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
   os << indent << "NumberOfEnvelopeSamples: " << this->NumberOfEnvelopeSamples << "\n";
+  os << indent << "MaximumSearches: " << this->MaximumSearches << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "Hausdorff: " << this->Hausdorff << " (" << this->HausdorffPercent << "%)\n";

@@ -29,7 +29,14 @@
  * Envelope to surface: NumberOfEnvelopeSamples area-uniform random points on
  * the boundary of the union (points of a primitive's surface strictly inside
  * another primitive are not on it and are skipped), each with its distance to
- * the surface (bounding-box hierarchy over the surface's triangles).
+ * the surface (bounding-box hierarchy over the surface's triangles). The
+ * largest of those distances falls short of the true envelope-to-surface
+ * Hausdorff distance by how much the distance varies between samples; from
+ * the MaximumSearches farthest samples a local search climbs along the
+ * envelope's boundary while the distance grows, and the largest distance
+ * reached is reported (every point reached lies on the boundary, so the value
+ * is still attained, never an overestimate). Field data
+ * `FarthestEnvelopePoint` says where it is.
  *
  * Output port 0: the prepared surface with point data `Distance` (unsigned,
  * to the envelope's boundary), `SignedDistance` (negative inside the
@@ -73,6 +80,13 @@ public:
   ///@}
 
   ///@{
+  /// Local searches raising the envelope-to-surface maximum, each from one
+  /// of the farthest envelope samples (default 16; 0 reports the samples'
+  /// maximum).
+  vtkSetClampMacro(MaximumSearches, int, 0, 10000);
+  vtkGetMacro(MaximumSearches, int);
+  ///@}
+  ///@{
   /// Seed of the random samples: the same seed gives the same samples.
   vtkSetMacro(RandomSeed, int);
   vtkGetMacro(RandomSeed, int);
@@ -103,6 +117,7 @@ protected:
 
   vtkIdType NumberOfSamples = 100000;
   vtkIdType NumberOfEnvelopeSamples = 100000;
+  int MaximumSearches = 16;
   int RandomSeed = 0;
   int NumberOfThreads = 0;
   double Hausdorff = 0.0;

@@ -565,6 +565,29 @@ inline double CompactValue(const double* d, int kind, const Point3& p)
 }
 }
 
+PrimitiveRef MedialEnvelope::BuryingPrimitive(std::uint32_t handle) const
+{
+  // Handles are positions in the tree's item order (see FindBurying).
+  return this->Active[this->Accelerate ? this->Tree.GetItems()[handle] : handle];
+}
+
+int MedialEnvelope::MedialVertices(const PrimitiveRef& ref, Index vertices[3]) const
+{
+  switch (ref.Kind)
+  {
+    case PrimitiveKind::Sphere:
+      vertices[0] = ref.Id;
+      return 1;
+    case PrimitiveKind::Cone:
+      vertices[0] = this->Edges[ref.Id][0];
+      vertices[1] = this->Edges[ref.Id][1];
+      return 2;
+    default:
+      std::copy_n(this->Faces[ref.Id].begin(), 3, vertices);
+      return 3;
+  }
+}
+
 double MedialEnvelope::ActiveValue(std::uint32_t active, const Point3& p) const
 {
   const Compact& k = this->Records[this->Slot[active]];

@@ -179,6 +179,9 @@ public:
     std::uint32_t hint = NoBurial,
     std::size_t maxItems = std::numeric_limits<std::size_t>::max()) const;
 
+  /// The primitive behind a handle returned by FindBurying.
+  PrimitiveRef BuryingPrimitive(std::uint32_t handle) const;
+
   struct BoundaryDistance
   {
     double Signed; // F(p) outside; -Upper inside
@@ -193,6 +196,10 @@ public:
   /// `warm` as for SignedDistance.
   BoundaryDistance DistanceToBoundary(
     const Point3& p, const Point3* hint = nullptr, std::uint32_t* warm = nullptr) const;
+
+  /// The medial vertices of a primitive (1 for a ball, 2 for a cone, 3 for a
+  /// slab), written to `vertices`; returns their number.
+  int MedialVertices(const PrimitiveRef& ref, Index vertices[3]) const;
 
   /// Signed distance to one primitive (the full primitive, slabs with their
   /// edge cones).

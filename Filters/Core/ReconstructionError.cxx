@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ReconstructionError.h"
 
+#include "EnvelopeMaximum.h"
+
 #include "KdTree.h"
 #include "MortonOrder.h"
 #include "Random.h"
@@ -63,6 +65,7 @@ public:
     }
   }
   bool Empty() const { return this->Cdf.empty(); }
+  double Total() const { return this->Cdf.empty() ? 0.0 : this->Cdf.back(); }
   /// Pick(u) for u >= the value that gave `from`: a walk forward, for
   /// increasing values (reads neighbouring entries instead of searching).
   std::size_t PickFrom(double u, std::size_t from) const
@@ -285,24 +288,6 @@ struct Piece
   double A0, A1, B0, B1;
   double Area = 0.0;
 };
-
-// The medial vertices of a primitive: its neighbours bury it first.
-int PrimitiveVertices(const MedialEnvelope& envelope, const PrimitiveRef& ref, Index vertices[3])
-{
-  switch (ref.Kind)
-  {
-    case PrimitiveKind::Sphere:
-      vertices[0] = ref.Id;
-      return 1;
-    case PrimitiveKind::Cone:
-      vertices[0] = envelope.ConeEdges()[ref.Id][0];
-      vertices[1] = envelope.ConeEdges()[ref.Id][1];
-      return 2;
-    default:
-      std::copy_n(envelope.SlabFaces()[ref.Id].begin(), 3, vertices);
-      return 3;
-  }
-}
 
 Point3 Direction(double z, double theta)
 {
@@ -845,8 +830,7 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
         {
           // Neighbours next: they bury most rejected candidates.
           Index vertices[3];
-          const int count =
-            PrimitiveVertices(envelope, pieces.Pieces[batchPieces[i]].Ref, vertices);
+          const int count = envelope.MedialVertices(pieces.Pieces[batchPieces[i]].Ref, vertices);
           const std::uint32_t by =
             envelope.FindBurying(batchPoints[i], envelope.Tolerance(), vertices, count, hint);
           keep[i] = by == MedialEnvelope::NoBurial ? 1 : 0;
@@ -907,6 +891,28 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
     return result;
   }
   Summarise(result.EnvelopeSampleDistance, 0, result.EnvelopeToSurface);
+  // The samples' largest distance, raised by climbing from the farthest ones
+  // (EnvelopeMaximum.h). First step: the samples' spacing, from the exposed
+  // area estimated as the pieces' area times the share of candidates kept.
+  if (!result.EnvelopeSamples.empty())
+  {
+    const auto farthest =
+      std::max_element(result.EnvelopeSampleDistance.begin(), result.EnvelopeSampleDistance.end());
+    result.EnvelopeFarthestPoint =
+      result.EnvelopeSamples[farthest - result.EnvelopeSampleDistance.begin()];
+    const double kept = double(result.EnvelopeSamples.size()) / double(result.EnvelopeCandidates);
+    EnvelopeMaximumOptions climb;
+    climb.Seeds = options.MaximumSearches;
+    climb.Step = std::sqrt(pieces.Cdf.Total() * kept / double(result.EnvelopeSamples.size()));
+    const EnvelopeMaximum refined = RefineEnvelopeMaximum(
+      envelope, result.EnvelopeSamples, result.EnvelopeSamplePrimitive,
+      result.EnvelopeSampleDistance, [&](const Point3& p) { return locator->Distance(p); }, climb);
+    if (refined.Distance > result.EnvelopeToSurface.Hausdorff)
+    {
+      result.EnvelopeToSurface.Hausdorff = refined.Distance;
+      result.EnvelopeFarthestPoint = refined.Point;
+    }
+  }
   result.EnvelopeToSurface.HausdorffLowerBound = result.EnvelopeToSurface.Hausdorff;
   result.EnvelopeSeconds = Lap(clock);
 

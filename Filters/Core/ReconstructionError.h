@@ -10,8 +10,9 @@
 // the boundary of the union (points of primitive surfaces strictly inside
 // another primitive are rejected), each with its distance to the surface.
 // Hausdorff distances are maxima over the samples (vertices included on the
-// surface side); mean and RMS are over the area-uniform samples. Two-sided
-// values are the larger of the two one-sided ones. Deterministic for a seed,
+// surface side); on the envelope side the maximum is then raised by local
+// searches from the farthest samples (EnvelopeMaximum.h). Mean and RMS are over the area-uniform
+// samples. Two-sided values are the larger of the two one-sided ones. Deterministic for a seed,
 // whatever the number of threads.
 #ifndef medialaxis_ReconstructionError_h
 #define medialaxis_ReconstructionError_h
@@ -30,6 +31,9 @@ struct ReconstructionErrorOptions
   std::size_t NumberOfSamples = 100000;         // on the surface, besides its vertices
   std::size_t NumberOfEnvelopeSamples = 100000; // on the boundary of the union
   std::uint64_t RandomSeed = 0;
+  /// Local searches that raise the envelope -> surface maximum from the
+  /// farthest envelope samples (EnvelopeMaximum.h); 0 keeps the samples'.
+  std::size_t MaximumSearches = 16;
   /// Called with the fraction done; return false to abort.
   std::function<bool(double)> Progress;
 };
@@ -63,6 +67,9 @@ struct ReconstructionErrorResult
   std::vector<Point3> EnvelopeSamples;
   std::vector<double> EnvelopeSampleDistance; // to the surface
   std::vector<PrimitiveRef> EnvelopeSamplePrimitive;
+  // Where the envelope -> surface Hausdorff distance is attained: a sample or
+  // the end of a local search from one (on the boundary of the union).
+  Point3 EnvelopeFarthestPoint{ 0, 0, 0 };
   std::size_t EnvelopeCandidates = 0; // primitive-surface points drawn (accepted or not)
 
   // Wall-clock seconds of each part, for benchmarks: surface -> envelope,

@@ -35,6 +35,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <limits>
 
 using namespace medialaxis;
 
@@ -401,6 +402,49 @@ TEST(ReconstructionError, EnvelopeSamplesAreAreaUniform)
   }
   // A third, within about 3 standard deviations (0.0015 each).
   EXPECT_NEAR(double(first) / double(r.EnvelopeSamples.size()), 1.0 / 3.0, 0.005);
+}
+
+// A capsule whose top ball is raised by 0.05 against the capsule surface:
+// the envelope -> surface distance peaks at the top ball's pole. A few random
+// samples fall short of it; the local searches from the farthest ones
+// (EnvelopeMaximum.h) reach it.
+TEST(ReconstructionError, EnvelopeMaximumClimbsToThePeak)
+{
+  const TriangleMesh capsule = MakeCapsule(0.5, 2.0, 64);
+  MedialMesh raised = Capsule(0.5, 1.0);
+  raised.Centers[1][2] += 0.05;
+  const MedialEnvelope envelope(raised);
+  const Point3 pole{ 0, 0, 1.55 };
+  double poleDistance = std::numeric_limits<double>::infinity();
+  for (const Triangle& t : capsule.Triangles)
+  {
+    poleDistance = std::min(poleDistance,
+      Norm(pole -
+        ClosestPointOnTriangle(
+          pole, capsule.Points[t[0]], capsule.Points[t[1]], capsule.Points[t[2]])));
+  }
+  ReconstructionErrorOptions options;
+  options.NumberOfSamples = 2000;
+  options.NumberOfEnvelopeSamples = 100;
+  options.MaximumSearches = 0;
+  const ReconstructionErrorResult sampled = ComputeReconstructionError(capsule, envelope, options);
+  options.MaximumSearches = 16;
+  const ReconstructionErrorResult climbed = ComputeReconstructionError(capsule, envelope, options);
+  std::printf("raised capsule: pole %.9f; sampled maximum %.9f, after the searches %.9f\n",
+    poleDistance, sampled.EnvelopeToSurface.Hausdorff, climbed.EnvelopeToSurface.Hausdorff);
+  EXPECT_LT(sampled.EnvelopeToSurface.Hausdorff, poleDistance - 5e-4);
+  // At the pole or, the surface being a polyhedron, within its chordal
+  // deviation (8e-5) of it.
+  EXPECT_GE(climbed.EnvelopeToSurface.Hausdorff, poleDistance - 1e-7);
+  EXPECT_LE(climbed.EnvelopeToSurface.Hausdorff, poleDistance + 1e-4);
+  EXPECT_LT(Norm(climbed.EnvelopeFarthestPoint - pole), 0.05);
+  // The point found is on the envelope's boundary.
+  EXPECT_NEAR(envelope.SignedDistance(climbed.EnvelopeFarthestPoint).Distance, 0.0, 1e-12);
+  EXPECT_EQ(climbed.EnvelopeToSurface.HausdorffLowerBound, climbed.EnvelopeToSurface.Hausdorff);
+  // Everything else is the samples', as before.
+  EXPECT_EQ(climbed.EnvelopeSamples, sampled.EnvelopeSamples);
+  EXPECT_EQ(climbed.EnvelopeToSurface.Mean, sampled.EnvelopeToSurface.Mean);
+  EXPECT_EQ(climbed.SurfaceToEnvelope.Hausdorff, sampled.SurfaceToEnvelope.Hausdorff);
 }
 
 TEST(ReconstructionError, CapsuleBelowATenthPercent)
@@ -926,6 +970,20 @@ TEST(MedialReconstructionErrorFilter, OutputsAndDeterminism)
   }
   EXPECT_NEAR(FieldValue(out, "Mean"), 0.05, 0.002);
   EXPECT_EQ(FieldValue(out, "EnvelopeSamples"), 20000);
+  // Where the envelope -> surface maximum is: a point of the envelope's
+  // boundary, the same at any thread count.
+  vtkDataArray* farthest = out->GetFieldData()->GetArray("FarthestEnvelopePoint");
+  ASSERT_NE(farthest, nullptr);
+  ASSERT_EQ(farthest->GetNumberOfComponents(), 3);
+  Point3 where;
+  farthest->GetTuple(0, where.data());
+  EXPECT_NEAR(MedialEnvelope(Capsule(0.55, 1.0)).SignedDistance(where).Distance, 0.0, 1e-9);
+  vtkDataArray* farthestTwo = outputs[1][0]->GetFieldData()->GetArray("FarthestEnvelopePoint");
+  ASSERT_NE(farthestTwo, nullptr);
+  for (int k = 0; k < 3; ++k)
+  {
+    EXPECT_EQ(farthest->GetComponent(0, k), farthestTwo->GetComponent(0, k));
+  }
   vtkPolyData* samples = outputs[0][1];
   EXPECT_EQ(samples->GetNumberOfVerts(), 20000);
   ASSERT_NE(samples->GetPointData()->GetArray("Distance"), nullptr);

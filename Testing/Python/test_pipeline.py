@@ -298,6 +298,12 @@ class PipelineTest(unittest.TestCase):
         samples = error.GetOutputDataObject(1)
         self.assertEqual(samples.GetNumberOfPoints(), 20000)
         self.assertIsNotNone(samples.GetPointData().GetArray("Distance"))
+        # The envelope-to-surface maximum is raised by local searches, never
+        # below the samples' own maximum, and located.
+        self.assertEqual(error.GetMaximumSearches(), 16)
+        self.assertGreaterEqual(fields.GetArray("HausdorffEnvelopeToSurface").GetValue(0),
+                                samples.GetPointData().GetArray("Distance").GetRange()[1])
+        self.assertEqual(fields.GetArray("FarthestEnvelopePoint").GetNumberOfComponents(), 3)
 
         # A medial mesh without radii is refused with a clear message.
         bad = vtk.vtkPolyData()

@@ -3,6 +3,7 @@
 //
 //   medialaxis-benchmark [--samples N] [--target V] [--cad] [--threads T] [--scaling]
 //                        [--counts N1,N2,...] [--envelope] [--error-samples S]
+//                        [--envelope-samples E]
 //                        [--shape torus|box|...] [--resolution R] mesh...
 //
 // Memory: the process's resident peak during each stage, and in brackets
@@ -16,7 +17,8 @@
 // --envelope adds, on the simplified MAT: "envelope" (the primitives-mode
 // envelope surface, core), "envelope-vtk" (the same through
 // vtkSlabReconstructor, poly data included) and "error" (reconstruction
-// error with S surface samples and S envelope samples, default 100,000).
+// error with S surface samples, default 100,000, and E envelope samples,
+// default the library's, 50,000).
 // The heap is tuned (HeapTuning.h) unless MEDIALAXIS_TUNE_HEAP=0; the
 // first line printed says how.
 #include "AnalyticShapes.h"
@@ -148,6 +150,7 @@ bool LoadSurface(
 std::size_t TopologyGuard = AtlasSimplifierOptions().TopologyGuardVertexCount;
 bool Envelope = false;
 std::size_t ErrorSamples = 100000;
+std::size_t EnvelopeSamples = ReconstructionErrorOptions().NumberOfEnvelopeSamples;
 
 // Envelope (primitives mode) and reconstruction error of a simplified MAT.
 void RunEnvelope(const TriangleMesh& mesh, const MedialMesh& medial, std::vector<Stage>& stages)
@@ -167,7 +170,7 @@ void RunEnvelope(const TriangleMesh& mesh, const MedialMesh& medial, std::vector
   ReconstructionErrorResult error;
   ReconstructionErrorOptions options;
   options.NumberOfSamples = ErrorSamples;
-  options.NumberOfEnvelopeSamples = ErrorSamples;
+  options.NumberOfEnvelopeSamples = EnvelopeSamples;
   stages.push_back(Measure("error",
     [&]
     {
@@ -293,6 +296,8 @@ int main(int argc, char* argv[])
       Envelope = true;
     else if (arg == "--error-samples" && i + 1 < argc)
       ErrorSamples = std::stoul(argv[++i]);
+    else if (arg == "--envelope-samples" && i + 1 < argc)
+      EnvelopeSamples = std::stoul(argv[++i]);
     else if (arg == "--shape" && i + 1 < argc)
       inputs.emplace_back(argv[++i], true);
     else if (arg == "--resolution" && i + 1 < argc)
@@ -312,6 +317,7 @@ int main(int argc, char* argv[])
       std::cout << "usage: " << argv[0]
                 << " [--samples N] [--target V] [--cad] [--threads T] [--scaling]"
                    " [--counts N1,N2,...] [--envelope] [--error-samples S]"
+                   " [--envelope-samples E]"
                    " [--shape torus|sphere|box] [--resolution R] mesh...\n";
       return 0;
     }

@@ -74,7 +74,10 @@ public:
   ///@}
 
   ///@{
-  /// Area-uniform random points on the envelope's boundary (default 100,000).
+  /// Area-uniform random points on the envelope's boundary (default 50,000:
+  /// with the local searches of MaximumSearches, their Hausdorff distance
+  /// comes out higher, i.e. closer to the true one, than a million samples'
+  /// without them).
   vtkSetClampMacro(NumberOfEnvelopeSamples, vtkIdType, 0, 1000000000);
   vtkGetMacro(NumberOfEnvelopeSamples, vtkIdType);
   ///@}
@@ -116,7 +119,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   vtkIdType NumberOfSamples = 100000;
-  vtkIdType NumberOfEnvelopeSamples = 100000;
+  vtkIdType NumberOfEnvelopeSamples = 50000;
   int MaximumSearches = 16;
   int RandomSeed = 0;
   int NumberOfThreads = 0;

@@ -47,6 +47,14 @@ Point3 SurfaceNormal(const MedialEnvelope& envelope, const PrimitiveRef& ref, co
   }
 }
 
+// Point of the sphere (centre, radius) nearest to p; `fallback` at the centre.
+Point3 OntoSphere(const Point3& centre, double radius, const Point3& p, const Point3& fallback)
+{
+  const Point3 v = p - centre;
+  const double length = Norm(v);
+  return length > 0.0 ? centre + (radius / length) * v : fallback;
+}
+
 // Two unit vectors completing n to an orthonormal frame.
 void TangentFrame(const Point3& n, Point3& t1, Point3& t2)
 {
@@ -94,9 +102,7 @@ Point3 ProjectOntoPrimitiveSurface(
     case PrimitiveKind::Sphere:
     {
       const SpherePrimitive& s = envelope.Spheres()[ref.Id];
-      const Point3 v = p - s.Center;
-      const double length = Norm(v);
-      return length > 0.0 ? s.Center + (s.Radius / length) * v : onSide;
+      return OntoSphere(s.Center, s.Radius, p, onSide);
     }
     case PrimitiveKind::Cone:
     {
@@ -105,9 +111,7 @@ Point3 ProjectOntoPrimitiveSurface(
       const ConePrimitive& c = envelope.Cones()[ref.Id];
       if (c.Nested)
       {
-        const Point3 v = p - c.C[c.Big];
-        const double length = Norm(v);
-        return length > 0.0 ? c.C[c.Big] + (c.R[c.Big] / length) * v : onSide;
+        return OntoSphere(c.C[c.Big], c.R[c.Big], p, onSide);
       }
       const Point3 v = p - c.C[0];
       const double angle = std::atan2(Dot(v, c.Perp2), Dot(v, c.Perp1));
@@ -180,7 +184,7 @@ EnvelopeMaximum RefineEnvelopeMaximum(const MedialEnvelope& envelope,
         climb.Point = r;
         climb.Distance = otherValue;
         climb.Primitive = other;
-        count = envelope.MedialVertices(other, vertices);
+        count = std::copy_n(otherVertices, otherCount, vertices) - vertices;
         return true;
       };
       double step = options.Step;

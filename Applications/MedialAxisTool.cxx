@@ -2,8 +2,8 @@
 // medial-axis: the Structural MAT of a closed triangle surface from the
 // command line. See PrintHelp() for the options and exit codes.
 #include "HeapTuning.h"
-#include "MedialMesh.h"
-#include "MedialMeshQuality.h"
+#include "Mesh/MedialMesh.h"
+#include "Mesh/MedialMeshQuality.h"
 #include "Screenshot.h"
 #include "vtkAtlasMedialAxisSimplifier.h"
 #include "vtkErrorEventText.h"

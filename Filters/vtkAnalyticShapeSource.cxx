@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkAnalyticShapeSource.h"
 
-#include "AnalyticShapes.h"
+#include "Surface/AnalyticShapes.h"
 #include "vtkSurfacePreparation.h"
 
 #include "vtkInformation.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkAtlasMedialAxisSimplifier.h"
 
-#include "AtlasSimplifier.h"
+#include "Simplification/AtlasSimplifier.h"
 #include "vtkMedialMeshConversion.h"
 
 #include "vtkCellArray.h"

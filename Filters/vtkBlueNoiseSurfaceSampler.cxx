@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkBlueNoiseSurfaceSampler.h"
 
-#include "BlueNoiseSampler.h"
-#include "Parallel.h"
+#include "Sampling/BlueNoiseSampler.h"
+#include "Support/Parallel.h"
 #include "vtkSurfacePreparation.h"
 
 #include "vtkCellArray.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkFilletDetector.h"
 
-#include "FilletDetector.h"
+#include "Fillets/FilletDetector.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkSurfacePreparation.h"
 

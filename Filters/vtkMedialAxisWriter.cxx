@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkMedialAxisWriter.h"
 
-#include "MaFormat.h"
+#include "Format/MaFormat.h"
 #include "vtkMedialMeshConversion.h"
 
 #include "vtkInformation.h"

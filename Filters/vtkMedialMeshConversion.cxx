@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkMedialMeshConversion.h"
 
-#include "Vec3.h"
+#include "Geometry/Vec3.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"

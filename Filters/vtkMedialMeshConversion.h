@@ -5,7 +5,7 @@
 #ifndef vtkMedialMeshConversion_h
 #define vtkMedialMeshConversion_h
 
-#include "MedialMesh.h"
+#include "Mesh/MedialMesh.h"
 
 #include <string>
 #include <vector>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkMedialReconstructionError.h"
 
-#include "EnvelopeDistance.h"
-#include "Parallel.h"
-#include "ReconstructionError.h"
+#include "Envelope/EnvelopeDistance.h"
+#include "Envelope/ReconstructionError.h"
+#include "Support/Parallel.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkSurfacePreparation.h"
 

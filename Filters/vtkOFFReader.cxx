@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkOFFReader.h"
 
-#include "OffFormat.h"
+#include "Format/OffFormat.h"
 
 #include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"

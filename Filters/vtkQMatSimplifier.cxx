@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkQMatSimplifier.h"
 
-#include "QMatSimplifier.h"
+#include "Simplification/QMatSimplifier.h"
 #include "vtkMedialMeshConversion.h"
 
 #include "vtkFieldData.h"

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkRestrictedVoronoiDiagram.h"
 
-#include "Parallel.h"
-#include "RestrictedVoronoi.h"
+#include "Support/Parallel.h"
+#include "Voronoi/RestrictedVoronoi.h"
 #include "vtkSurfacePreparation.h"
 
 #include "vtkCellArray.h"

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkSlabReconstructor.h"
 
-#include "EnvelopeDistance.h"
-#include "EnvelopeMesher.h"
-#include "Parallel.h"
-#include "Vec3.h"
+#include "Envelope/EnvelopeDistance.h"
+#include "Envelope/EnvelopeMesher.h"
+#include "Geometry/Vec3.h"
+#include "Support/Parallel.h"
 #include "vtkMedialMeshConversion.h"
 
 #include "vtkCellArray.h"

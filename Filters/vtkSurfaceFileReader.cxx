@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkSurfaceFileReader.h"
 
-#include "ObjCheck.h"
+#include "Format/ObjCheck.h"
 #include "vtkErrorEventText.h"
 
 #include "vtkOFFReader.h"

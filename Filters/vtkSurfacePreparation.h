@@ -5,7 +5,7 @@
 #ifndef vtkSurfacePreparation_h
 #define vtkSurfacePreparation_h
 
-#include "SurfacePreparation.h"
+#include "Surface/SurfacePreparation.h"
 
 class vtkPolyData;
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkVoronoiMedialAxis.h"
 
-#include "Parallel.h"
-#include "VoronoiMedialAxis.h"
+#include "Support/Parallel.h"
+#include "Voronoi/VoronoiMedialAxis.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkSurfacePreparation.h"
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Every analytic shape is closed, manifold, outward, with the exact area and
 // volume within 1% at the default resolution, and vertices on the surface.
-#include "AnalyticShapes.h"
-#include "SurfacePreparation.h"
+#include "Surface/AnalyticShapes.h"
+#include "Surface/SurfacePreparation.h"
 #include "vtkAnalyticShapeSource.h"
 #include "vtkMedialSurfaceValidator.h"
 

@@ -3,9 +3,9 @@
 // vtkStructuralMedialAxis (the result checked) or refused with an error
 // event naming the defect. The same inputs as Testing/Python/bad_inputs.py,
 // built here in code; docs/robustness.md documents the behaviour.
-#include "AnalyticShapes.h"
+#include "Geometry/Vec3.h"
+#include "Surface/AnalyticShapes.h"
 #include "TestHelpers.h"
-#include "Vec3.h"
 #include "vtkMedialSurfaceValidator.h"
 #include "vtkStructuralMedialAxis.h"
 #include "vtkSurfaceFileReader.h"

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Blue-noise sampling: exact count, determinism, spacing quality against
 // white noise, area-proportional density, samples on their triangles.
-#include "AnalyticShapes.h"
-#include "BlueNoiseSampler.h"
-#include "KdTree.h"
-#include "Parallel.h"
-#include "SurfacePreparation.h"
+#include "Geometry/KdTree.h"
+#include "Geometry/Vec3.h"
+#include "Sampling/BlueNoiseSampler.h"
+#include "Support/Parallel.h"
+#include "Surface/AnalyticShapes.h"
+#include "Surface/SurfacePreparation.h"
 #include "TestHelpers.h"
-#include "Vec3.h"
 #include "vtkBlueNoiseSurfaceSampler.h"
 #include "vtkSurfaceFileReader.h"
 #include "vtkSurfacePreparation.h"

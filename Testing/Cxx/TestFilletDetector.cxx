@@ -2,10 +2,10 @@
 // Fillet detection against generated parts whose fillets are known exactly:
 // rounded boxes, a prism with some edges rounded, a variable-radius fillet
 // and a cylinder with a rounded rim.
-#include "AnalyticShapes.h"
-#include "FilletDetector.h"
-#include "SurfacePreparation.h"
-#include "Vec3.h"
+#include "Fillets/FilletDetector.h"
+#include "Geometry/Vec3.h"
+#include "Surface/AnalyticShapes.h"
+#include "Surface/SurfacePreparation.h"
 
 #include "TestHelpers.h"
 #include "vtkAnalyticShapeSource.h"

@@ -3,11 +3,11 @@
 #ifndef medialaxis_TestHelpers_h
 #define medialaxis_TestHelpers_h
 
-#include "AtlasSimplifier.h"
-#include "BlueNoiseSampler.h"
-#include "PolygonMesh.h"
-#include "RestrictedVoronoi.h"
-#include "VoronoiMedialAxis.h"
+#include "Mesh/PolygonMesh.h"
+#include "Sampling/BlueNoiseSampler.h"
+#include "Simplification/AtlasSimplifier.h"
+#include "Voronoi/RestrictedVoronoi.h"
+#include "Voronoi/VoronoiMedialAxis.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkBlueNoiseSurfaceSampler.h"

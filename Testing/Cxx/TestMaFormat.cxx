@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // .ma reading and writing: exact round trips and every malformed-file case.
-#include "MaFormat.h"
+#include "Format/MaFormat.h"
 #include "TestHelpers.h"
 #include "vtkMedialAxisReader.h"
 #include "vtkMedialAxisWriter.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The shared medial-mesh validity check, on plain meshes and on poly data.
-#include "MedialMesh.h"
-#include "MedialMeshQuality.h"
+#include "Mesh/MedialMesh.h"
+#include "Mesh/MedialMeshQuality.h"
 #include "vtkMedialMeshConversion.h"
 
 #include "vtkCellArray.h"

@@ -7,14 +7,14 @@
 // triangles than the noiseless one's, and its two-sided Hausdorff distance to
 // the surface it was computed from stays within twice the noiseless value.
 // Skipped when the shared meshes are absent.
-#include "AtlasSimplifier.h"
-#include "BlueNoiseSampler.h"
-#include "EnvelopeDistance.h"
-#include "MedialMeshQuality.h"
-#include "ReconstructionError.h"
-#include "RestrictedVoronoi.h"
-#include "Vec3.h"
-#include "VoronoiMedialAxis.h"
+#include "Envelope/EnvelopeDistance.h"
+#include "Envelope/ReconstructionError.h"
+#include "Geometry/Vec3.h"
+#include "Mesh/MedialMeshQuality.h"
+#include "Sampling/BlueNoiseSampler.h"
+#include "Simplification/AtlasSimplifier.h"
+#include "Voronoi/RestrictedVoronoi.h"
+#include "Voronoi/VoronoiMedialAxis.h"
 #include "vtkSurfaceFileReader.h"
 #include "vtkSurfacePreparation.h"
 

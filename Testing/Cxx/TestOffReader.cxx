@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // OFF reading: polygons kept as polygons, variants, malformed files.
-#include "ObjCheck.h"
-#include "OffFormat.h"
+#include "Format/ObjCheck.h"
+#include "Format/OffFormat.h"
 #include "TestHelpers.h"
 #include "vtkOFFReader.h"
 

@@ -2,13 +2,13 @@
 // Q-MAT simplification on the shared edge-collapse framework: the paper's
 // unit-sphere and spike-removal tests, boundary preservation, validity,
 // determinism, and input read from a .ma file (no Atlases).
-#include "AnalyticShapes.h"
-#include "MaFormat.h"
-#include "MedialMeshQuality.h"
-#include "Parallel.h"
-#include "QMatSimplifier.h"
-#include "Random.h"
-#include "Vec3.h"
+#include "Format/MaFormat.h"
+#include "Geometry/Vec3.h"
+#include "Mesh/MedialMeshQuality.h"
+#include "Simplification/QMatSimplifier.h"
+#include "Support/Parallel.h"
+#include "Support/Random.h"
+#include "Surface/AnalyticShapes.h"
 
 #include "vtkAnalyticShapeSource.h"
 #include "vtkCellData.h"

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Restricted Voronoi diagram: area conservation, brute-force cell checks,
 // disconnected cells of a thin plate, feature flags, determinism.
-#include "AnalyticShapes.h"
-#include "BlueNoiseSampler.h"
-#include "Parallel.h"
-#include "Random.h"
-#include "RestrictedVoronoi.h"
-#include "SurfacePreparation.h"
+#include "Geometry/Vec3.h"
+#include "Sampling/BlueNoiseSampler.h"
+#include "Support/Parallel.h"
+#include "Support/Random.h"
+#include "Surface/AnalyticShapes.h"
+#include "Surface/SurfacePreparation.h"
 #include "TestHelpers.h"
-#include "Vec3.h"
+#include "Voronoi/RestrictedVoronoi.h"
 #include "vtkAnalyticShapeSource.h"
 #include "vtkBlueNoiseSurfaceSampler.h"
 #include "vtkRestrictedVoronoiDiagram.h"

@@ -2,13 +2,13 @@
 // Every real mesh of the shared test set (see its SOURCES.md for origin and
 // terms) reads and prepares into a closed, manifold, outward surface whose
 // genus matches the one SOURCES.md gives. Skipped when the set is absent.
-#include "AtlasSimplifier.h"
-#include "BlueNoiseSampler.h"
-#include "MedialMeshQuality.h"
-#include "RestrictedVoronoi.h"
+#include "Mesh/MedialMeshQuality.h"
+#include "Mesh/TriangleLocator.h"
+#include "Sampling/BlueNoiseSampler.h"
+#include "Simplification/AtlasSimplifier.h"
 #include "TestHelpers.h"
-#include "TriangleLocator.h"
-#include "VoronoiMedialAxis.h"
+#include "Voronoi/RestrictedVoronoi.h"
+#include "Voronoi/VoronoiMedialAxis.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialSurfaceValidator.h"

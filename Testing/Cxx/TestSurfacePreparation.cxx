@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Surface validation and preparation, one defect per small hand-built mesh.
-#include "AnalyticShapes.h"
-#include "SurfacePreparation.h"
+#include "Geometry/Vec3.h"
+#include "Surface/AnalyticShapes.h"
+#include "Surface/SurfacePreparation.h"
 #include "TestHelpers.h"
-#include "Vec3.h"
 #include "vtkMedialSurfaceValidator.h"
 #include "vtkSurfacePreparation.h"
 

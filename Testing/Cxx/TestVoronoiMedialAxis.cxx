@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Initial medial mesh against ground truths: sphere, capsule, box, torus,
 // L-block concave filtering, determinism, and every shared mesh.
-#include "AnalyticShapes.h"
-#include "BlueNoiseSampler.h"
-#include "Parallel.h"
-#include "RestrictedVoronoi.h"
-#include "SurfacePreparation.h"
+#include "Geometry/Vec3.h"
+#include "Sampling/BlueNoiseSampler.h"
+#include "Support/Parallel.h"
+#include "Surface/AnalyticShapes.h"
+#include "Surface/SurfacePreparation.h"
 #include "TestHelpers.h"
-#include "Vec3.h"
-#include "VoronoiMedialAxis.h"
+#include "Voronoi/RestrictedVoronoi.h"
+#include "Voronoi/VoronoiMedialAxis.h"
 #include "vtkAnalyticShapeSource.h"
 #include "vtkBlueNoiseSurfaceSampler.h"
 #include "vtkMedialMeshConversion.h"

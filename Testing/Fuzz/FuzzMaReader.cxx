@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the .ma parser on arbitrary bytes. Whatever parses must
 // also write and read back to the same mesh.
-#include "MaFormat.h"
+#include "Format/MaFormat.h"
 
 #include <cstdint>
 #include <cstdlib>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the OFF parser on arbitrary bytes. A successful parse
 // must give polygons whose indices are all valid.
-#include "OffFormat.h"
+#include "Format/OffFormat.h"
 
 #include <cstdint>
 #include <cstdlib>

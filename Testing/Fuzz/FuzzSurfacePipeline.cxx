@@ -8,12 +8,12 @@
 // triangles. Points are 16-bit grid coordinates (exact, so that closed seed
 // meshes stay closed under mutation), or raw doubles when flag bit 0 is set
 // (NaN, infinities, 1e300 and denormals).
-#include "AtlasSimplifier.h"
-#include "BlueNoiseSampler.h"
-#include "MedialMesh.h"
-#include "RestrictedVoronoi.h"
-#include "SurfacePreparation.h"
-#include "VoronoiMedialAxis.h"
+#include "Mesh/MedialMesh.h"
+#include "Sampling/BlueNoiseSampler.h"
+#include "Simplification/AtlasSimplifier.h"
+#include "Surface/SurfacePreparation.h"
+#include "Voronoi/RestrictedVoronoi.h"
+#include "Voronoi/VoronoiMedialAxis.h"
 
 #include <tbb/task_arena.h>
 

@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Mesh/MedialMesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace medialaxis
+{
+namespace
+{
+std::array<Index, 2> SortedEdge(Index a, Index b)
+{
+  return a < b ? std::array<Index, 2>{ a, b } : std::array<Index, 2>{ b, a };
+}
+
+std::array<Index, 3> SortedFace(std::array<Index, 3> f)
+{
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+template <typename T>
+std::size_t CountRepeats(std::vector<T> items)
+{
+  std::sort(items.begin(), items.end());
+  std::size_t repeats = 0;
+  for (std::size_t i = 1; i < items.size(); ++i)
+  {
+    repeats += (items[i] == items[i - 1]) ? 1 : 0;
+  }
+  return repeats;
+}
+
+// "1 radius", "2 radii": irregular plurals are spelled out by the caller.
+std::string Plural(std::size_t n, const char* singular, const char* plural)
+{
+  std::ostringstream s;
+  s << n << ' ' << (n == 1 ? singular : plural);
+  return s.str();
+}
+}
+
+MedialMeshCheck ValidateMedialMesh(const MedialMesh& mesh)
+{
+  MedialMeshCheck check;
+  const std::size_t nv = mesh.Centers.size();
+  if (mesh.Radii.size() != nv)
+  {
+    std::ostringstream s;
+    s << "medial mesh has " << mesh.Radii.size() << " radii for " << nv << " vertices";
+    check.Message = s.str();
+    return check;
+  }
+
+  std::size_t nonFinitePoints = 0, badRadii = 0;
+  for (std::size_t i = 0; i < nv; ++i)
+  {
+    const Point3& p = mesh.Centers[i];
+    nonFinitePoints += (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) ? 0 : 1;
+    badRadii += (std::isfinite(mesh.Radii[i]) && mesh.Radii[i] >= 0.0) ? 0 : 1;
+  }
+  if (nonFinitePoints)
+  {
+    check.Message = "medial mesh has " + Plural(nonFinitePoints, "vertex", "vertices") +
+      " with NaN or infinite coordinates";
+    return check;
+  }
+  if (badRadii)
+  {
+    check.Message = "medial mesh has " + Plural(badRadii, "radius that is", "radii that are") +
+      " negative, NaN or infinite";
+    return check;
+  }
+
+  auto outOfRange = [nv](Index i) { return i < 0 || static_cast<std::size_t>(i) >= nv; };
+  std::size_t badIndices = 0, degenerate = 0;
+  std::vector<std::array<Index, 2>> edges;
+  edges.reserve(mesh.Edges.size());
+  for (const auto& e : mesh.Edges)
+  {
+    badIndices += (outOfRange(e[0]) || outOfRange(e[1])) ? 1 : 0;
+    degenerate += (e[0] == e[1]) ? 1 : 0;
+    edges.push_back(SortedEdge(e[0], e[1]));
+  }
+  std::vector<std::array<Index, 3>> faces;
+  faces.reserve(mesh.Faces.size());
+  for (const auto& f : mesh.Faces)
+  {
+    badIndices += (outOfRange(f[0]) || outOfRange(f[1]) || outOfRange(f[2])) ? 1 : 0;
+    degenerate += (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) ? 1 : 0;
+    faces.push_back(SortedFace(f));
+  }
+  if (badIndices)
+  {
+    check.Message = "medial mesh has " + Plural(badIndices, "cell", "cells") +
+      " referencing a vertex index outside [0, " + std::to_string(nv) + ")";
+    return check;
+  }
+  if (degenerate)
+  {
+    check.Message = "medial mesh has " + Plural(degenerate, "degenerate cell", "degenerate cells") +
+      " (a vertex repeated within an edge or triangle)";
+    return check;
+  }
+  const std::size_t duplicateEdges = CountRepeats(std::move(edges));
+  const std::size_t duplicateFaces = CountRepeats(std::move(faces));
+  if (duplicateEdges || duplicateFaces)
+  {
+    check.Message = "medial mesh has " +
+      Plural(duplicateFaces, "duplicate triangle", "duplicate triangles") + " and " +
+      Plural(duplicateEdges, "duplicate edge", "duplicate edges");
+    return check;
+  }
+  return check;
+}
+
+std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh)
+{
+  std::vector<std::array<Index, 2>> edges;
+  edges.reserve(mesh.Edges.size() + 3 * mesh.Faces.size());
+  for (const auto& e : mesh.Edges)
+  {
+    edges.push_back(SortedEdge(e[0], e[1]));
+  }
+  for (const auto& f : mesh.Faces)
+  {
+    edges.push_back(SortedEdge(f[0], f[1]));
+    edges.push_back(SortedEdge(f[1], f[2]));
+    edges.push_back(SortedEdge(f[2], f[0]));
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+std::vector<std::array<Index, 2>> EdgesNotOnFaces(const MedialMesh& mesh)
+{
+  std::vector<std::array<Index, 2>> faceEdges;
+  faceEdges.reserve(3 * mesh.Faces.size());
+  for (const auto& f : mesh.Faces)
+  {
+    faceEdges.push_back(SortedEdge(f[0], f[1]));
+    faceEdges.push_back(SortedEdge(f[1], f[2]));
+    faceEdges.push_back(SortedEdge(f[2], f[0]));
+  }
+  std::sort(faceEdges.begin(), faceEdges.end());
+  std::vector<std::array<Index, 2>> result;
+  for (const auto& e : mesh.Edges)
+  {
+    const auto s = SortedEdge(e[0], e[1]);
+    if (!std::binary_search(faceEdges.begin(), faceEdges.end(), s))
+    {
+      result.push_back(s);
+    }
+  }
+  std::sort(result.begin(), result.end());
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
+}
+
+long long EulerCharacteristic(const MedialMesh& mesh)
+{
+  return static_cast<long long>(mesh.Centers.size()) -
+    static_cast<long long>(AllEdges(mesh).size()) + static_cast<long long>(mesh.Faces.size());
+}
+
+std::vector<Index> IsolatedVertices(const MedialMesh& mesh)
+{
+  std::vector<char> used(mesh.Centers.size(), 0);
+  auto mark = [&used](Index i)
+  {
+    if (i >= 0 && static_cast<std::size_t>(i) < used.size())
+    {
+      used[i] = 1;
+    }
+  };
+  for (const auto& e : mesh.Edges)
+  {
+    mark(e[0]);
+    mark(e[1]);
+  }
+  for (const auto& f : mesh.Faces)
+  {
+    mark(f[0]);
+    mark(f[1]);
+    mark(f[2]);
+  }
+  std::vector<Index> isolated;
+  for (std::size_t i = 0; i < used.size(); ++i)
+  {
+    if (!used[i])
+    {
+      isolated.push_back(static_cast<Index>(i));
+    }
+  }
+  return isolated;
+}
+}

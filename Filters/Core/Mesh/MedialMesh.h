@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Plain C++ medial mesh (no VTK): sphere centres with radii, medial edges
+// ("cones") and medial triangles ("slabs"). The VTK representation of the same
+// data is described in DESIGN.md; conversion lives in MedialMeshConversion.
+#ifndef medialaxis_MedialMesh_h
+#define medialaxis_MedialMesh_h
+
+#include "Geometry/Types.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace medialaxis
+{
+struct MedialMesh
+{
+  std::vector<Point3> Centers;
+  std::vector<double> Radii;
+  std::vector<std::array<Index, 2>> Edges; // may include edges of faces
+  std::vector<std::array<Index, 3>> Faces;
+
+  std::size_t NumberOfVertices() const { return this->Centers.size(); }
+};
+
+/// Outcome of ValidateMedialMesh: empty Message means valid.
+struct MedialMeshCheck
+{
+  std::string Message;
+  bool IsValid() const { return this->Message.empty(); }
+};
+
+/// Checks the data contract every consumer relies on: one finite,
+/// non-negative radius per vertex, finite coordinates, indices in range, no
+/// degenerate (repeated-vertex) edges or faces and no duplicate edges or faces
+/// (in any vertex order). The message names the first defect and its count.
+MedialMeshCheck ValidateMedialMesh(const MedialMesh& mesh);
+
+/// The edges that bound no face, sorted and unique: the "cone" edges stored
+/// as line cells in the VTK representation.
+std::vector<std::array<Index, 2>> EdgesNotOnFaces(const MedialMesh& mesh);
+
+/// Every distinct edge, face edges included, sorted by (min, max) vertex id.
+std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh);
+
+/// V - E + F of the complex (E counts every distinct edge, face edges included).
+long long EulerCharacteristic(const MedialMesh& mesh);
+
+/// Ids of vertices referenced by no edge and no face.
+std::vector<Index> IsolatedVertices(const MedialMesh& mesh);
+}
+
+#endif

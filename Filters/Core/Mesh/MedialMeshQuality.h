@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Triangle quality and fold-over counts of a medial mesh, measured the way
+// the medial-axis papers report them (DESIGN.md, "Quality").
+#ifndef medialaxis_MedialMeshQuality_h
+#define medialaxis_MedialMeshQuality_h
+
+#include "Geometry/Vec3.h"
+#include "Mesh/MedialMesh.h"
+
+#include <cmath>
+#include <cstddef>
+
+namespace medialaxis
+{
+struct MedialMeshQuality
+{
+  std::size_t Triangles = 0;
+  /// Triangles with (numerically) zero area: twice the area at most 1e-12
+  /// times the longest edge squared.
+  std::size_t DegenerateTriangles = 0;
+  /// Edges shared by exactly two triangles that fold onto each other: with
+  /// both oriented consistently across the edge, their normals point in
+  /// opposite directions to within FoldAngleDegrees (the two triangles
+  /// overlap, as after a flipping collapse). Each such fold counts its two
+  /// triangles once each in FoldedTriangles.
+  std::size_t FoldedEdges = 0;
+  std::size_t FoldedTriangles = 0;
+  /// Triangle edges on one triangle (the boundary of the medial sheets) and
+  /// on three or more (seams where sheets meet, or fins).
+  std::size_t BoundaryEdges = 0;
+  std::size_t NonManifoldEdges = 0;
+  /// Mean smallest angle (degrees) and the share of triangles whose smallest
+  /// angle is below 30 degrees, over non-degenerate triangles.
+  double MeanMinimumAngle = 0.0;
+  double PercentMinimumAngleBelow30 = 0.0;
+  /// Mean Q = 6 / sqrt(3) * area / (longest edge * half perimeter): 1 for
+  /// an equilateral triangle, 0 for a degenerate one.
+  double MeanQuality = 0.0;
+};
+
+/// A fold is a dihedral angle (between the two triangles' planes, on their
+/// side) below this many degrees.
+constexpr double FoldAngleDegrees = 10.0;
+
+MedialMeshQuality MeasureQuality(const MedialMesh& mesh);
+
+/// Whether the triangles (u, v, x) and (v, u, y), which share the edge
+/// (u, v), fold onto each other (see MedialMeshQuality::FoldedEdges).
+inline bool IsFold(const Point3& u, const Point3& v, const Point3& x, const Point3& y)
+{
+  const Point3 e = v - u;
+  const Point3 n1 = Cross(e, x - u);
+  const Point3 n2 = Cross(y - v, e); // = (u - v) x (y - v)
+  static const double cosFold = std::cos(FoldAngleDegrees * 3.14159265358979323846 / 180.0);
+  return Dot(n1, n2) < -cosFold * Norm(n1) * Norm(n2);
+}
+}
+
+#endif

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Blue-noise sampling of a triangle surface by weighted sample elimination
+// (Yuksel, "Sample Elimination for Generating Poisson Disk Sample Sets",
+// Eurographics 2015), optionally followed by restricted centroidal Voronoi
+// (Lloyd) relaxation on the surface.
+#ifndef medialaxis_BlueNoiseSampler_h
+#define medialaxis_BlueNoiseSampler_h
+
+#include "Mesh/PolygonMesh.h"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace medialaxis
+{
+struct SamplingOptions
+{
+  std::size_t NumberOfSamples = 10000; // exactly this many come out
+  std::uint64_t Seed = 0;
+  /// Random candidates per output sample before elimination.
+  double CandidateRatio = 4.0;
+  /// Lloyd steps of restricted centroidal Voronoi relaxation.
+  int RelaxationIterations = 0;
+  /// Fraction in [0, 1]; returning false aborts (the result is then empty).
+  std::function<bool(double)> Progress;
+};
+
+struct SurfaceSamples
+{
+  std::vector<Point3> Points;
+  std::vector<Index> TriangleIds; // the triangle each sample lies on
+  std::vector<Point3> Normals;    // unit normal of that triangle
+  bool Aborted = false;
+};
+
+/// The surface must have positive area. Deterministic for a given seed,
+/// whatever the number of threads.
+SurfaceSamples SampleSurface(const TriangleMesh& surface, const SamplingOptions& options);
+
+/// The ideal spacing of n samples on area A: the nearest-neighbour distance
+/// of a hexagonal packing, sqrt(2 A / (sqrt(3) n)).
+double IdealSampleSpacing(double area, std::size_t n);
+}
+
+#endif

@@ -1,0 +1,648 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Simplification/AtlasSimplifier.h"
+
+#include "Geometry/Vec3.h"
+#include "Simplification/EdgeCollapse.h"
+#include "Simplification/SphereQuadric.h"
+#include "Support/Prefetch.h"
+#include "Support/SortedLists.h"
+
+#include <LBFGS.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <tuple>
+
+namespace medialaxis
+{
+namespace
+{
+// Cost of a collapse and where it puts the merged sphere.
+struct Placement
+{
+  double Energy = HUGE_VAL;
+  Sphere Target{};
+};
+
+// Adds lambda x the uniform Laplacian (Eq. 12) over `count` neighbours with
+// centre sum `sum` and squared-norm sum `sumSquares`.
+void AddLaplacian(
+  SphereQuadric& q, double lambda, const Point3& sum, double sumSquares, std::size_t count)
+{
+  if (count == 0)
+  {
+    return;
+  }
+  const double w = lambda / static_cast<double>(count);
+  for (int k = 0; k < 3; ++k)
+  {
+    q.A(k, k) += lambda;
+    q.B(k) += w * sum[k];
+  }
+  q.C() += w * sumSquares;
+}
+
+// Nonlinear fidelity of Eq. 11 plus the quadratic part, for L-BFGS.
+struct InvaginatedEnergy
+{
+  const SphereQuadric* Quadratic;
+  const std::vector<std::pair<Point3, double>>* Anchors; // site, cell area
+
+  double operator()(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const
+  {
+    const Sphere s{ x[0], x[1], x[2], x[3] };
+    double energy = this->Quadratic->Evaluate(s);
+    const Sphere as = this->Quadratic->Times(s);
+    for (int i = 0; i < 4; ++i)
+    {
+      gradient[i] = 2.0 * as[i] - 2.0 * this->Quadratic->B(i);
+    }
+    for (const auto& [site, area] : *this->Anchors)
+    {
+      const Point3 d = Point3{ s[0], s[1], s[2] } - site;
+      const double length = std::max(Norm(d), 1e-300);
+      const double residual = length - s[3];
+      energy += area * residual * residual;
+      for (int k = 0; k < 3; ++k)
+      {
+        gradient[k] += 2.0 * area * residual * d[k] / length;
+      }
+      gradient[3] -= 2.0 * area * residual;
+    }
+    return energy;
+  }
+};
+
+// The Atlas energy of paper 000 as a collapse policy: each vertex carries
+// its Atlas and the quadric of its regular cells; feature vertices snap onto
+// sharp edges and stay there.
+class AtlasPolicy final : public CollapsePolicy
+{
+public:
+  AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
+    const std::vector<Point3>& sites, const AtlasSimplifierOptions& options);
+
+  const Normalisation& Frame() const { return this->UnitFrame; }
+  Evaluation Evaluate(
+    const MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) const override;
+  std::array<Sphere, 3> FallbackSpheres(
+    const MedialEdgeCollapse& mesh, Index a, Index b) const override;
+  void Merged(MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) override;
+  std::vector<Index> Prepare(MedialEdgeCollapse& mesh) override;
+  void AfterCollapse(MedialEdgeCollapse& mesh, Index a, CollapseScratch& scratch) override;
+  void Prefetch(Index v) const override
+  {
+    PrefetchObject(&this->AtlasQuadric[v]);
+    medialaxis::Prefetch(this->Atlas[v].data());
+  }
+  AtlasMedialMesh Output(const MedialEdgeCollapse& mesh) const;
+
+  std::atomic<std::size_t> Snapped{ 0 }; // by collapses running at once
+  std::size_t ForcedSnaps = 0;
+
+private:
+  Placement Solve(const MedialEdgeCollapse& mesh, const SphereQuadric& q,
+    const std::vector<std::pair<Point3, double>>& anchors, Index a, Index b) const;
+  double Weight(double spike) const;
+  // Moves feature vertex v onto its sharp edge (r = 0); with keepValid, not
+  // when that would make a zero-area or folded triangle.
+  enum class SnapResult
+  {
+    Moved,
+    Refused, // the move would make a zero-area or folded triangle
+    NoTarget // no point near the Atlas fits its cells' planes
+  };
+  SnapResult Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid, CollapseScratch& scratch);
+  // Whether a snap target lies among v's Atlas sites (see Snap).
+  bool NearAtlas(Index v, const Point3& target) const;
+  void UpdateFeature(Index v);
+  // A feature vertex already on its sharp edge (snapped, radius 0).
+  bool OnFeature(const MedialEdgeCollapse& mesh, Index v) const
+  {
+    return this->Feature[v] && mesh.SphereOf(v)[3] == 0.0;
+  }
+
+  const AtlasSimplifierOptions& Options;
+  Normalisation UnitFrame;
+  // Per site.
+  std::vector<SphereQuadric> CellQuadric;
+  std::vector<double> CellArea;
+  std::vector<Point3> Site;
+  std::vector<std::uint8_t> Convex, Invaginated;
+  // Per vertex.
+  std::vector<std::vector<Index>> Atlas;
+  std::vector<SphereQuadric> AtlasQuadric; // regular cells of the Atlas, each once
+  std::vector<char> Feature;
+  std::vector<char> AnyInvaginated; // some cell of the Atlas is invaginated
+};
+
+AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
+  const std::vector<Point3>& sites, const AtlasSimplifierOptions& options)
+  : Options(options)
+{
+  // Normalisation from the sites' bounding box (the surface's extent).
+  Point3 lo{ 0, 0, 0 }, hi{ 0, 0, 0 };
+  if (!sites.empty())
+  {
+    std::tie(lo, hi) = BoundingBox(sites);
+  }
+  const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+  this->UnitFrame.Origin = lo;
+  this->UnitFrame.Scale = extent > 0.0 ? 1.0 / extent : 1.0;
+
+  // Per-cell quadrics from the RVD polygons (normal and area by Newell's
+  // formula: every polygon is planar, a piece of one surface triangle).
+  const std::size_t ns = sites.size();
+  this->Site.resize(ns);
+  for (std::size_t i = 0; i < ns; ++i)
+  {
+    this->Site[i] = this->UnitFrame.To(sites[i]);
+  }
+  this->CellQuadric.assign(ns, SphereQuadric());
+  this->CellArea.assign(ns, 0.0);
+  for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)
+  {
+    const Index site = rvd.PolygonSite[p];
+    if (site < 0 || static_cast<std::size_t>(site) >= ns)
+    {
+      continue;
+    }
+    Point3 twiceNormal{ 0, 0, 0 };
+    const Index first = rvd.Offsets[p], count = rvd.Offsets[p + 1] - first;
+    const Point3 anchor = this->UnitFrame.To(rvd.Vertices[first]);
+    for (Index k = 1; k + 1 < count; ++k)
+    {
+      twiceNormal = twiceNormal +
+        Cross(this->UnitFrame.To(rvd.Vertices[first + k]) - anchor,
+          this->UnitFrame.To(rvd.Vertices[first + k + 1]) - anchor);
+    }
+    const double area = 0.5 * Norm(twiceNormal);
+    if (!(area > 0.0))
+    {
+      continue;
+    }
+    const Point3 n = Normalized(twiceNormal);
+    this->CellQuadric[site].AddFacet(n, Dot(n, anchor), area);
+    this->CellArea[site] += area;
+  }
+  this->Convex.assign(ns, 0);
+  this->Invaginated.assign(ns, 0);
+  if (rvd.ConvexFeature.size() == ns)
+  {
+    this->Convex = rvd.ConvexFeature;
+  }
+  if (rvd.ConcaveFeature.size() == ns && this->Options.InvaginatedTerm)
+  {
+    this->Invaginated = rvd.ConcaveFeature;
+  }
+
+  // Vertices, Atlases and their quadrics.
+  const MedialMesh& mesh = input.Mesh;
+  const std::size_t nv = mesh.Centers.size();
+  this->Atlas.resize(nv);
+  this->AtlasQuadric.assign(nv, SphereQuadric());
+  this->Feature.assign(nv, 0);
+  this->AnyInvaginated.assign(nv, 0);
+  // Vertex by vertex, independently: in parallel.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 2048),
+    [&](const tbb::blocked_range<std::size_t>& range)
+    {
+      for (std::size_t v = range.begin(); v != range.end(); ++v)
+      {
+        auto& atlas = this->Atlas[v];
+        for (Index k = input.AtlasOffsets[v]; k < input.AtlasOffsets[v + 1]; ++k)
+        {
+          const Index s = input.AtlasSites[k];
+          if (s >= 0 && static_cast<std::size_t>(s) < ns)
+          {
+            atlas.push_back(s);
+          }
+        }
+        std::sort(atlas.begin(), atlas.end());
+        atlas.erase(std::unique(atlas.begin(), atlas.end()), atlas.end());
+        for (Index s : atlas)
+        {
+          if (!this->Invaginated[s])
+          {
+            this->AtlasQuadric[v] += this->CellQuadric[s];
+          }
+          else
+          {
+            this->AnyInvaginated[v] = 1;
+          }
+        }
+        this->UpdateFeature(static_cast<Index>(v));
+      }
+    });
+}
+
+// A feature vertex's Atlas touches a sharp convex edge and no concave one.
+void AtlasPolicy::UpdateFeature(Index v)
+{
+  if (!this->Options.PreserveSharpFeatures)
+  {
+    this->Feature[v] = 0;
+    return;
+  }
+  bool convex = false, concave = false;
+  for (Index s : this->Atlas[v])
+  {
+    convex = convex || this->Convex[s];
+    concave = concave || this->Invaginated[s];
+  }
+  this->Feature[v] = convex && !concave ? 1 : 0;
+}
+
+double AtlasPolicy::Weight(double spike) const
+{
+  const double t = this->Options.SpikeSharpness * (spike - this->Options.SpikeThreshold);
+  // Past 40, exp(-t) < 2^-57 and 1 + exp(-t) rounds to exactly 1: most
+  // edges (stability ratio above 0.43 at the default sharpness) skip the call.
+  if (t > 40.0)
+  {
+    return 1.0;
+  }
+  return 1.0 / (1.0 + std::exp(-t));
+}
+
+Placement AtlasPolicy::Solve(const MedialEdgeCollapse& mesh, const SphereQuadric& q,
+  const std::vector<std::pair<Point3, double>>& anchors, Index a, Index b) const
+{
+  const Sphere& pa = mesh.SphereOf(a);
+  const Sphere& pb = mesh.SphereOf(b);
+  const Sphere mid{ 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]),
+    0.5 * (pa[3] + pb[3]) };
+  auto energyAt = [&](const Sphere& x)
+  {
+    double e = q.Evaluate(x);
+    for (const auto& [site, area] : anchors)
+    {
+      const double r = Norm(Point3{ x[0], x[1], x[2] } - site) - x[3];
+      e += area * r * r;
+    }
+    return e;
+  };
+  Placement best;
+  auto consider = [&](const Sphere& x)
+  {
+    if (x[3] < 0.0)
+    {
+      return;
+    }
+    const double e = energyAt(x);
+    if (e < best.Energy)
+    {
+      best.Energy = e;
+      best.Target = x;
+    }
+  };
+
+  const bool aFeature = this->OnFeature(mesh, a), bFeature = this->OnFeature(mesh, b);
+  if (this->Options.PreserveSharpFeatures && (aFeature || bFeature) && anchors.empty())
+  {
+    // Eq. 18: discrete candidates with zero radius.
+    auto atZero = [](const Sphere& s) { return Sphere{ s[0], s[1], s[2], 0.0 }; };
+    if (aFeature && !bFeature)
+    {
+      consider(atZero(pa));
+    }
+    else if (bFeature && !aFeature)
+    {
+      consider(atZero(pb));
+    }
+    else
+    {
+      consider(atZero(pa));
+      consider(atZero(pb));
+      consider(atZero(mid));
+    }
+    return best;
+  }
+
+  if (anchors.empty())
+  {
+    // Closed form (4 x 4); a negative radius is replaced by the best centre
+    // with r = 0 (the 3 x 3 block).
+    Eigen::Vector4d x;
+    if (SolveQuadric<4>(q, x))
+    {
+      Sphere s{ x[0], x[1], x[2], x[3] };
+      Eigen::Vector3d y;
+      if (s[3] < 0.0 && SolveQuadric<3>(q, y))
+      {
+        s = { y[0], y[1], y[2], 0.0 };
+      }
+      consider(s);
+    }
+  }
+  else
+  {
+    // Eq. 11 is nonlinear: L-BFGS from the midpoint, radius = distance to
+    // the nearest Atlas site (paper section 4.2).
+    Eigen::VectorXd x(4);
+    x << mid[0], mid[1], mid[2], HUGE_VAL;
+    for (const auto& [site, area] : anchors)
+    {
+      x[3] = std::min(x[3], Norm(Point3{ mid[0], mid[1], mid[2] } - site));
+    }
+    InvaginatedEnergy f{ &q, &anchors };
+    LBFGSpp::LBFGSParam<double> param;
+    param.epsilon = 1e-10;
+    param.max_iterations = 50;
+    LBFGSpp::LBFGSSolver<double> solver(param);
+    double fx = 0.0;
+    try
+    {
+      solver.minimize(f, x, fx);
+    }
+    catch (const std::exception&)
+    {
+      // Line search trouble: keep the best point reached.
+    }
+    if (x.allFinite())
+    {
+      consider({ x[0], x[1], x[2], std::max(0.0, x[3]) });
+    }
+  }
+  if (!(best.Energy < HUGE_VAL))
+  {
+    // Singular or failed: the best of the endpoints and the midpoint.
+    consider(pa);
+    consider(pb);
+    consider(mid);
+  }
+  return best;
+}
+
+CollapsePolicy::Evaluation AtlasPolicy::Evaluate(
+  const MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) const
+{
+  auto& anchors = scratch.Anchors;
+  // Union of the Atlases, each cell once: Q(A u B) = Q(A) + Q(B) - Q(A n B).
+  SphereQuadric q = this->AtlasQuadric[a];
+  q += this->AtlasQuadric[b];
+  anchors.clear();
+  const auto& A = this->Atlas[a];
+  const auto& B = this->Atlas[b];
+  if (!this->AnyInvaginated[a] && !this->AnyInvaginated[b])
+  {
+    // No anchors: only the shared cells matter (the same subtractions, in
+    // the same order, as below).
+    ForEachShared(A, B, [&](Index s) { q -= this->CellQuadric[s]; });
+  }
+  else
+  {
+    ForEachInUnion(A, B,
+      [&](Index s, bool shared)
+      {
+        if (this->Invaginated[s])
+        {
+          anchors.emplace_back(this->Site[s], this->CellArea[s]);
+        }
+        else if (shared)
+        {
+          q -= this->CellQuadric[s];
+        }
+      });
+  }
+  // Uniform Laplacian over the merged one-ring (Eq. 12).
+  Point3 sum{ 0, 0, 0 };
+  double sumSquares = 0.0;
+  const std::size_t count = mesh.MergedRingSums(a, b, sum, sumSquares);
+  AddLaplacian(q, this->Options.Lambda, sum, sumSquares, count);
+  const Placement p = this->Solve(mesh, q, anchors, a, b);
+  const double cost = p.Energy < HUGE_VAL
+    ? std::max(0.0, p.Energy) * this->Weight(mesh.StabilityRatio(a, b))
+    : HUGE_VAL;
+  return { cost, p.Target };
+}
+
+// The endpoints and the midpoint, cheapest first by the fidelity of the
+// merged Atlas, with each one's own radius (0 for feature ones).
+std::array<Sphere, 3> AtlasPolicy::FallbackSpheres(
+  const MedialEdgeCollapse& mesh, Index a, Index b) const
+{
+  const Sphere pa = mesh.SphereOf(a), pb = mesh.SphereOf(b);
+  Sphere candidates[3] = { pa, pb,
+    { 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]),
+      0.5 * (pa[3] + pb[3]) } };
+  if (this->OnFeature(mesh, a) && !this->OnFeature(mesh, b))
+  {
+    candidates[1] = candidates[2] = pa;
+  }
+  else if (this->OnFeature(mesh, b) && !this->OnFeature(mesh, a))
+  {
+    candidates[0] = candidates[2] = pb;
+  }
+  SphereQuadric q = this->AtlasQuadric[a];
+  q += this->AtlasQuadric[b];
+  std::array<int, 3> order{ 0, 1, 2 };
+  double energy[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    energy[k] = q.Evaluate(candidates[k]);
+  }
+  std::sort(order.begin(), order.end(),
+    [&energy](int x, int y) { return energy[x] != energy[y] ? energy[x] < energy[y] : x < y; });
+  return { candidates[order[0]], candidates[order[1]], candidates[order[2]] };
+}
+
+void AtlasPolicy::Merged(MedialEdgeCollapse&, Index a, Index b, CollapseScratch& scratch)
+{
+  // Atlas and its quadric: Q(A u B) = Q(A) + Q(B) - Q(A n B).
+  auto& atlas = scratch.Indices;
+  atlas.clear();
+  atlas.reserve(this->Atlas[a].size() + this->Atlas[b].size());
+  this->AtlasQuadric[a] += this->AtlasQuadric[b];
+  ForEachInUnion(this->Atlas[a], this->Atlas[b],
+    [&](Index s, bool shared)
+    {
+      if (shared && !this->Invaginated[s])
+      {
+        this->AtlasQuadric[a] -= this->CellQuadric[s];
+      }
+      atlas.push_back(s);
+    });
+  this->Atlas[a].swap(atlas); // the old list becomes the next scratch
+  std::vector<Index>().swap(this->Atlas[b]);
+  this->AnyInvaginated[a] = this->AnyInvaginated[a] || this->AnyInvaginated[b];
+  this->UpdateFeature(a);
+}
+
+// Eq. 17: a feature vertex moves onto its sharp edge with r = 0.
+// Feature vertices on one straight edge are collinear: a triangle of three
+// of them would have zero area, and a snap can fold a triangle over its
+// neighbour.
+AtlasPolicy::SnapResult AtlasPolicy::Snap(
+  MedialEdgeCollapse& mesh, Index v, bool keepValid, CollapseScratch& scratch)
+{
+  SphereQuadric q = this->AtlasQuadric[v];
+  Point3 sum{ 0, 0, 0 };
+  double sumSquares = 0.0;
+  for (Index u : mesh.Neighbours(v))
+  {
+    const Point3 p = mesh.Position(u);
+    sum = sum + p;
+    sumSquares += Dot(p, p);
+  }
+  AddLaplacian(q, this->Options.Lambda, sum, sumSquares, mesh.Neighbours(v).size());
+  Eigen::Vector3d x;
+  if (!SolveQuadric<3>(q, x))
+  {
+    return SnapResult::NoTarget;
+  }
+  const Point3 target{ x[0], x[1], x[2] };
+  if (!this->NearAtlas(v, target))
+  {
+    return SnapResult::NoTarget;
+  }
+  if (keepValid && !mesh.MoveKeepsValid(v, target, scratch))
+  {
+    return SnapResult::Refused;
+  }
+  mesh.Move(v, { x[0], x[1], x[2], 0.0 });
+  ++this->Snapped;
+  return SnapResult::Moved;
+}
+
+// The point where the planes of an Atlas's cells meet (with r = 0) is on the
+// sharp edge when the cells lie on the two faces along it. Where they lie
+// on faces that meet only beyond the part (the flanks of a gear tooth cut
+// off by its tip, a chamfer), that point is outside, well away from every
+// site of the Atlas: a snap there would put the envelope outside the
+// surface. Refused past twice the cells' size from the nearest site.
+bool AtlasPolicy::NearAtlas(Index v, const Point3& target) const
+{
+  double nearest2 = HUGE_VAL, largestArea = 0.0;
+  for (Index s : this->Atlas[v])
+  {
+    nearest2 = std::min(nearest2, Distance2(this->Site[s], target));
+    largestArea = std::max(largestArea, this->CellArea[s]);
+  }
+  return nearest2 <= 4.0 * largestArea;
+}
+
+// Eq. 17: every feature vertex onto its sharp edge. First those whose snap
+// keeps the mesh valid; then the rest anyway (a feature vertex off its edge
+// would spoil the boundary), and the edges around those are collapsed first,
+// which removes most of the zero-area or folded triangles they make (the
+// others: MedialEdgeCollapse::CollapseFolds).
+std::vector<Index> AtlasPolicy::Prepare(MedialEdgeCollapse& mesh)
+{
+  std::vector<Index> forced;
+  if (this->Options.PreserveSharpFeatures)
+  {
+    CollapseScratch scratch;
+    for (std::size_t v = 0; v < mesh.NumberOfVertices(); ++v)
+    {
+      if (this->Feature[v] &&
+        this->Snap(mesh, static_cast<Index>(v), true, scratch) == SnapResult::Refused)
+      {
+        forced.push_back(static_cast<Index>(v));
+      }
+    }
+    for (Index v : forced)
+    {
+      this->Snap(mesh, v, false, scratch);
+    }
+  }
+  this->ForcedSnaps = forced.size();
+  return forced;
+}
+
+// Retries the snap of feature vertices off their edge at and around a.
+void AtlasPolicy::AfterCollapse(MedialEdgeCollapse& mesh, Index a, CollapseScratch& scratch)
+{
+  if (this->Feature[a] && !this->OnFeature(mesh, a))
+  {
+    this->Snap(mesh, a, true, scratch);
+  }
+  for (Index u : mesh.Neighbours(a))
+  {
+    if (this->Feature[u] && !this->OnFeature(mesh, u))
+    {
+      this->Snap(mesh, u, true, scratch);
+    }
+  }
+}
+
+AtlasMedialMesh AtlasPolicy::Output(const MedialEdgeCollapse& mesh) const
+{
+  AtlasMedialMesh out;
+  std::vector<Index> inputId;
+  out.Mesh = mesh.Output(inputId);
+  for (Index v : inputId)
+  {
+    out.AtlasSites.insert(out.AtlasSites.end(), this->Atlas[v].begin(), this->Atlas[v].end());
+    out.AtlasOffsets.push_back(static_cast<Index>(out.AtlasSites.size()));
+    out.FeatureVertex.push_back(this->Feature[v]);
+  }
+  return out;
+}
+
+EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
+{
+  EdgeCollapseOptions c;
+  c.TargetNumberOfVertices = o.TargetNumberOfVertices;
+  c.MaximumCost = o.MaximumCost;
+  c.SpikeThreshold = o.SpikeThreshold;
+  c.TopologyGuardVertexCount = o.TopologyGuardVertexCount;
+  c.FringeCollapses = UsesFringeCollapses(o);
+  c.EulerNeutralSpikeCollapses = o.EulerNeutralSpikeCollapses;
+  c.StrictLinkConditionVertexCount = o.StrictLinkConditionVertexCount;
+  c.StrictTopologyGuard = o.StrictTopologyGuard;
+  c.PreventFolds = o.PreventFolds;
+  // With sharp features (CAD) the strictly sequential order (checked ahead
+  // on a second thread, with the same result): which medial vertices end up
+  // on a fillet's centre line depends on the order, and the fillet
+  // detector's refinement of that line is sensitive to it.
+  c.MaximumBatch = o.PreserveSharpFeatures ? 1 : c.MaximumBatch;
+  c.CheckAhead = o.CheckAhead;
+  c.Progress = o.Progress;
+  return c;
+}
+} // namespace
+
+bool UsesFringeCollapses(const AtlasSimplifierOptions& o)
+{
+  switch (o.FringeCollapses)
+  {
+    case FringeCollapseMode::On:
+      return true;
+    case FringeCollapseMode::Off:
+      return false;
+    case FringeCollapseMode::Automatic:
+      break;
+  }
+  return !o.PreserveSharpFeatures && o.TargetNumberOfVertices >= o.StrictLinkConditionVertexCount;
+}
+
+AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
+  const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
+  const AtlasSimplifierOptions& options)
+{
+  // Setup (per-cell quadrics, Atlases, connectivity) plus the snapping and
+  // evaluation of every edge is the queue initialisation.
+  const auto start = std::chrono::steady_clock::now();
+  AtlasPolicy policy(input, rvd, sites, options);
+  const EdgeCollapseOptions collapseOptions = CollapseOptions(options);
+  MedialEdgeCollapse mesh(input.Mesh, policy.Frame(), collapseOptions, policy);
+  const double setupSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const EdgeCollapseCounts counts = mesh.Run();
+  AtlasSimplifierResult result;
+  static_cast<EdgeCollapseCounts&>(result) = counts;
+  result.QueueInitialisationSeconds += setupSeconds;
+  if (!counts.Aborted)
+  {
+    result.Medial = policy.Output(mesh);
+    result.ForcedSnaps = policy.ForcedSnaps;
+    result.SnappedVertices = policy.Snapped.load();
+  }
+  return result;
+}
+} // namespace medialaxis

@@ -1,0 +1,707 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Surface/AnalyticShapes.h"
+
+#include "Geometry/Vec3.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace medialaxis
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+// Splits quad (a, b, c, d), given counter-clockwise seen from outside, along
+// its shorter diagonal.
+void AddQuad(TriangleMesh& mesh, Index a, Index b, Index c, Index d)
+{
+  if (Distance2(mesh.Points[a], mesh.Points[c]) <= Distance2(mesh.Points[b], mesh.Points[d]))
+  {
+    mesh.Triangles.push_back({ a, b, c });
+    mesh.Triangles.push_back({ a, c, d });
+  }
+  else
+  {
+    mesh.Triangles.push_back({ a, b, d });
+    mesh.Triangles.push_back({ b, c, d });
+  }
+}
+
+// Lattice coordinates along one axis, on the surface of the enclosing box:
+// the fillet band maps tan-uniformly so that arc segments are equal-angle.
+std::vector<double> AxisSamples(double half, double rho, int bandSegments, double spacing)
+{
+  const double inner = half - rho;
+  std::vector<double> band; // offsets beyond the inner half-extent, 0..rho
+  if (rho > 0.0)
+  {
+    for (int i = 0; i <= bandSegments; ++i)
+    {
+      band.push_back(rho * std::tan(0.25 * Pi * i / bandSegments));
+    }
+  }
+  else
+  {
+    band.push_back(0.0);
+  }
+  std::vector<double> samples;
+  for (auto it = band.rbegin(); it != band.rend(); ++it)
+  {
+    samples.push_back(-inner - *it);
+  }
+  const int innerSegments =
+    inner > 0.0 ? std::max(1, static_cast<int>(std::lround(2.0 * inner / spacing))) : 0;
+  for (int i = 1; i < innerSegments; ++i)
+  {
+    samples.push_back(-inner + 2.0 * inner * i / innerSegments);
+  }
+  for (std::size_t i = (innerSegments == 0 ? 1 : 0); i < band.size(); ++i)
+  {
+    samples.push_back(inner + band[i]);
+  }
+  return samples;
+}
+
+void RequirePositive(double value, const char* what)
+{
+  if (!(value > 0.0) || !std::isfinite(value))
+  {
+    throw std::invalid_argument(std::string(what) + " must be positive and finite");
+  }
+}
+}
+
+TriangleMesh MakeRoundedBox(const Point3& sides, double filletRadius, int resolution)
+{
+  for (double s : sides)
+  {
+    RequirePositive(s, "box side");
+  }
+  const double minHalf = 0.5 * std::min({ sides[0], sides[1], sides[2] });
+  if (!(filletRadius >= 0.0) || filletRadius > minHalf * (1.0 + 1e-12))
+  {
+    throw std::invalid_argument("fillet radius must lie in [0, smallest side / 2]");
+  }
+  const double rho = std::min(filletRadius, minHalf);
+  resolution = std::max(resolution, 2);
+  const int bandSegments = (resolution + 1) / 2;
+  const double maxSide = std::max({ sides[0], sides[1], sides[2] });
+  // Flat parts: edges as long as the fillet's arc segments, but no finer than
+  // maxSide / (2 resolution), so that small fillets do not explode the count.
+  const double spacing = rho > 0.0
+    ? std::max(0.5 * Pi * rho / (2 * bandSegments), 0.5 * maxSide / resolution)
+    : maxSide / resolution;
+
+  std::vector<double> axis[3];
+  double inner[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double half = 0.5 * sides[a];
+    // Sides equal to 2 rho have no flat part: avoid a sliver from rounding.
+    const double r = (half - rho) <= 1e-12 * half ? half : rho;
+    axis[a] = AxisSamples(half, r, bandSegments, spacing);
+    inner[a] = half - r;
+  }
+  const Index n[3] = { static_cast<Index>(axis[0].size()), static_cast<Index>(axis[1].size()),
+    static_cast<Index>(axis[2].size()) };
+
+  TriangleMesh mesh;
+  std::vector<Index> nodeId(static_cast<std::size_t>(n[0] * n[1] * n[2]), -1);
+  auto node = [&](Index i, Index j, Index k)
+  {
+    Index& id = nodeId[static_cast<std::size_t>((i * n[1] + j) * n[2] + k)];
+    if (id < 0)
+    {
+      const Point3 p{ axis[0][i], axis[1][j], axis[2][k] };
+      Point3 q, d;
+      double length2 = 0.0;
+      for (int a = 0; a < 3; ++a)
+      {
+        q[a] = std::clamp(p[a], -inner[a], inner[a]);
+        d[a] = p[a] - q[a];
+        length2 += d[a] * d[a];
+      }
+      Point3 x = p;
+      if (length2 > 0.0 && rho > 0.0)
+      {
+        const double scale = rho / std::sqrt(length2);
+        for (int a = 0; a < 3; ++a)
+        {
+          x[a] = q[a] + d[a] * scale;
+        }
+      }
+      id = static_cast<Index>(mesh.Points.size());
+      mesh.Points.push_back(x);
+    }
+    return id;
+  };
+
+  for (int a = 0; a < 3; ++a)
+  {
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    for (int side = 0; side < 2; ++side)
+    {
+      const Index fixed = side == 0 ? 0 : n[a] - 1;
+      for (Index u = 0; u + 1 < n[b]; ++u)
+      {
+        for (Index v = 0; v + 1 < n[c]; ++v)
+        {
+          Index ids[4];
+          const Index uu[4] = { u, u + 1, u + 1, u };
+          const Index vv[4] = { v, v, v + 1, v + 1 };
+          for (int corner = 0; corner < 4; ++corner)
+          {
+            Index ijk[3];
+            ijk[a] = fixed;
+            ijk[b] = uu[corner];
+            ijk[c] = vv[corner];
+            ids[corner] = node(ijk[0], ijk[1], ijk[2]);
+          }
+          if (side == 1)
+          {
+            AddQuad(mesh, ids[0], ids[1], ids[2], ids[3]);
+          }
+          else
+          {
+            AddQuad(mesh, ids[0], ids[3], ids[2], ids[1]);
+          }
+        }
+      }
+    }
+  }
+  return mesh;
+}
+
+TriangleMesh MakeSphere(double radius, int resolution)
+{
+  RequirePositive(radius, "sphere radius");
+  return MakeRoundedBox({ 2 * radius, 2 * radius, 2 * radius }, radius, resolution);
+}
+
+TriangleMesh MakeCapsule(double radius, double axisLength, int resolution)
+{
+  RequirePositive(radius, "capsule radius");
+  if (!(axisLength >= 0.0) || !std::isfinite(axisLength))
+  {
+    throw std::invalid_argument("capsule axis length must be non-negative and finite");
+  }
+  return MakeRoundedBox({ 2 * radius, 2 * radius, axisLength + 2 * radius }, radius, resolution);
+}
+
+TriangleMesh MakeTorus(double majorRadius, double minorRadius, int resolution)
+{
+  RequirePositive(majorRadius, "torus major radius");
+  RequirePositive(minorRadius, "torus minor radius");
+  if (!(minorRadius < majorRadius))
+  {
+    throw std::invalid_argument("torus minor radius must be smaller than its major radius");
+  }
+  resolution = std::max(resolution, 2);
+  const int nv = 4 * resolution;
+  const int nu = std::max(3, static_cast<int>(std::lround(nv * majorRadius / minorRadius)));
+  TriangleMesh mesh;
+  mesh.Points.reserve(static_cast<std::size_t>(nu) * nv);
+  for (int i = 0; i < nu; ++i)
+  {
+    const double u = 2.0 * Pi * i / nu;
+    for (int j = 0; j < nv; ++j)
+    {
+      const double v = 2.0 * Pi * j / nv;
+      const double ring = majorRadius + minorRadius * std::cos(v);
+      mesh.Points.push_back({ ring * std::cos(u), ring * std::sin(u), minorRadius * std::sin(v) });
+    }
+  }
+  auto id = [nu, nv](int i, int j) { return static_cast<Index>((i % nu) * nv + (j % nv)); };
+  for (int i = 0; i < nu; ++i)
+  {
+    for (int j = 0; j < nv; ++j)
+    {
+      AddQuad(mesh, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+    }
+  }
+  return mesh;
+}
+
+TriangleMesh MakeCylinder(double radius, double height, int resolution)
+{
+  RequirePositive(radius, "cylinder radius");
+  RequirePositive(height, "cylinder height");
+  resolution = std::max(resolution, 2);
+  const int around = 4 * resolution;
+  const double spacing = 2.0 * Pi * radius / around;
+  const int rows = std::max(1, static_cast<int>(std::lround(height / spacing)));
+  const int rings = std::max(1, static_cast<int>(std::lround(radius / spacing)));
+  TriangleMesh mesh;
+  // Side rows 0..rows (z from -h/2 to h/2), then cap rings inward, then centres.
+  auto ringPoint = [&](double r, int k, double z)
+  {
+    const double t = 2.0 * Pi * k / around;
+    return Point3{ r * std::cos(t), r * std::sin(t), z };
+  };
+  for (int row = 0; row <= rows; ++row)
+  {
+    const double z = -0.5 * height + height * row / rows;
+    for (int k = 0; k < around; ++k)
+    {
+      mesh.Points.push_back(ringPoint(radius, k, z));
+    }
+  }
+  auto side = [around](int row, int k) { return static_cast<Index>(row * around + k % around); };
+  for (int row = 0; row < rows; ++row)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      AddQuad(mesh, side(row, k), side(row, k + 1), side(row + 1, k + 1), side(row + 1, k));
+    }
+  }
+  // Caps: ring 0 is the rim (shared with the side), ring `rings` the centre.
+  for (int top = 0; top < 2; ++top)
+  {
+    const double z = top ? 0.5 * height : -0.5 * height;
+    std::vector<Index> previous(around);
+    for (int k = 0; k < around; ++k)
+    {
+      previous[k] = side(top ? rows : 0, k);
+    }
+    for (int ring = 1; ring < rings; ++ring)
+    {
+      const double r = radius * (rings - ring) / rings;
+      std::vector<Index> current(around);
+      for (int k = 0; k < around; ++k)
+      {
+        current[k] = static_cast<Index>(mesh.Points.size());
+        mesh.Points.push_back(ringPoint(r, k, z));
+      }
+      for (int k = 0; k < around; ++k)
+      {
+        const int k1 = (k + 1) % around;
+        if (top)
+        {
+          AddQuad(mesh, previous[k], previous[k1], current[k1], current[k]);
+        }
+        else
+        {
+          AddQuad(mesh, previous[k], current[k], current[k1], previous[k1]);
+        }
+      }
+      previous.swap(current);
+    }
+    const Index centre = static_cast<Index>(mesh.Points.size());
+    mesh.Points.push_back({ 0.0, 0.0, z });
+    for (int k = 0; k < around; ++k)
+    {
+      const int k1 = (k + 1) % around;
+      if (top)
+      {
+        mesh.Triangles.push_back({ previous[k], previous[k1], centre });
+      }
+      else
+      {
+        mesh.Triangles.push_back({ previous[k], centre, previous[k1] });
+      }
+    }
+  }
+  return mesh;
+}
+
+TriangleMesh MakeLBlock(const Point3& sides, int resolution)
+{
+  for (double s : sides)
+  {
+    RequirePositive(s, "L-block side");
+  }
+  // The surface of a set of grid cells: every cell face between an inside
+  // and an outside cell, as two triangles, over shared grid nodes.
+  const int n = std::max(resolution, 1);
+  const int cells[3] = { 2 * n, 2 * n, 2 * n };
+  auto inside = [&](int i, int j, int k)
+  {
+    if (i < 0 || j < 0 || k < 0 || i >= cells[0] || j >= cells[1] || k >= cells[2])
+    {
+      return false;
+    }
+    return !(i >= n && j >= n);
+  };
+  TriangleMesh mesh;
+  std::vector<Index> nodeId(static_cast<std::size_t>(2 * n + 1) * (2 * n + 1) * (2 * n + 1), -1);
+  auto node = [&](int i, int j, int k)
+  {
+    Index& id = nodeId[(static_cast<std::size_t>(i) * (2 * n + 1) + j) * (2 * n + 1) + k];
+    if (id < 0)
+    {
+      id = static_cast<Index>(mesh.Points.size());
+      mesh.Points.push_back({ sides[0] * (double(i) / cells[0] - 0.5),
+        sides[1] * (double(j) / cells[1] - 0.5), sides[2] * (double(k) / cells[2] - 0.5) });
+    }
+    return id;
+  };
+  for (int i = 0; i < cells[0]; ++i)
+  {
+    for (int j = 0; j < cells[1]; ++j)
+    {
+      for (int k = 0; k < cells[2]; ++k)
+      {
+        if (!inside(i, j, k))
+        {
+          continue;
+        }
+        const int c[3] = { i, j, k };
+        for (int a = 0; a < 3; ++a)
+        {
+          const int b = (a + 1) % 3, d = (a + 2) % 3;
+          for (int side = 0; side < 2; ++side)
+          {
+            int o[3] = { i, j, k };
+            o[a] += side ? 1 : -1;
+            if (inside(o[0], o[1], o[2]))
+            {
+              continue;
+            }
+            // Face corners in the (b, d) plane at a = c[a] + side.
+            Index ids[4];
+            const int du[4] = { 0, 1, 1, 0 }, dv[4] = { 0, 0, 1, 1 };
+            for (int q = 0; q < 4; ++q)
+            {
+              int p[3];
+              p[a] = c[a] + side;
+              p[b] = c[b] + du[q];
+              p[d] = c[d] + dv[q];
+              ids[q] = node(p[0], p[1], p[2]);
+            }
+            // (b, d) counter-clockwise has normal +a.
+            if (side)
+            {
+              AddQuad(mesh, ids[0], ids[1], ids[2], ids[3]);
+            }
+            else
+            {
+              AddQuad(mesh, ids[0], ids[3], ids[2], ids[1]);
+            }
+          }
+        }
+      }
+    }
+  }
+  return mesh;
+}
+
+namespace
+{
+// Rings of a star-shaped planar cap at height z, from its outline (ring 0,
+// whose point ids are given) inward to the centre `centre`: quads between
+// rings, a fan at the centre. `up` orients the cap's normal to +z.
+void AddCap(TriangleMesh& mesh, const std::vector<Index>& outline, const Point3& centre, int rings,
+  bool up, std::vector<int>* labels)
+{
+  const std::size_t n = outline.size();
+  std::vector<Index> previous = outline;
+  const std::size_t before = mesh.Triangles.size();
+  for (int ring = 1; ring < rings; ++ring)
+  {
+    const double scale = double(rings - ring) / rings;
+    std::vector<Index> current(n);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const Point3& p = mesh.Points[outline[k]];
+      current[k] = static_cast<Index>(mesh.Points.size());
+      mesh.Points.push_back(
+        { centre[0] + scale * (p[0] - centre[0]), centre[1] + scale * (p[1] - centre[1]), p[2] });
+    }
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const std::size_t k1 = (k + 1) % n;
+      if (up)
+      {
+        AddQuad(mesh, previous[k], previous[k1], current[k1], current[k]);
+      }
+      else
+      {
+        AddQuad(mesh, previous[k], current[k], current[k1], previous[k1]);
+      }
+    }
+    previous.swap(current);
+  }
+  const Index middle = static_cast<Index>(mesh.Points.size());
+  mesh.Points.push_back(centre);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const std::size_t k1 = (k + 1) % n;
+    if (up)
+    {
+      mesh.Triangles.push_back({ previous[k], previous[k1], middle });
+    }
+    else
+    {
+      mesh.Triangles.push_back({ previous[k], middle, previous[k1] });
+    }
+  }
+  labels->resize(labels->size() + (mesh.Triangles.size() - before), -1);
+}
+
+void RequireFilletRadius(double r)
+{
+  if (!(r >= 0.0) || !std::isfinite(r))
+  {
+    throw std::invalid_argument("fillet radii must be non-negative and finite");
+  }
+}
+}
+
+LabelledTriangleMesh MakeFilletedPrism(const Point3& sides,
+  const std::array<double, 4>& bottomRadii, const std::array<double, 4>& topRadii, int resolution)
+{
+  for (double s : sides)
+  {
+    RequirePositive(s, "prism side");
+  }
+  const double halfX = 0.5 * sides[0], halfY = 0.5 * sides[1], height = sides[2];
+  for (int k = 0; k < 4; ++k)
+  {
+    RequireFilletRadius(bottomRadii[k]);
+    RequireFilletRadius(topRadii[k]);
+    if ((bottomRadii[k] > 0.0) != (topRadii[k] > 0.0))
+    {
+      throw std::invalid_argument("a prism edge must be rounded at both ends or at neither");
+    }
+    // Neighbouring arcs must not overlap along the side between them.
+    const int next = (k + 1) % 4;
+    const double side = (k % 2 == 0) ? sides[0] : sides[1];
+    if (std::max(bottomRadii[k] + bottomRadii[next], topRadii[k] + topRadii[next]) > side)
+    {
+      throw std::invalid_argument("the fillets of two neighbouring prism edges overlap");
+    }
+  }
+  resolution = std::max(resolution, 2);
+  const double spacing = std::max({ sides[0], sides[1], height }) / (2.0 * resolution);
+  const int layers = std::max(1, static_cast<int>(std::lround(height / spacing)));
+  // Corners counter-clockwise seen from +z; the arc of corner k turns from
+  // angle k pi/2 to (k + 1) pi/2 around its centre.
+  const double cornerX[4] = { halfX, -halfX, -halfX, halfX };
+  const double cornerY[4] = { halfY, halfY, -halfY, -halfY };
+  int sideSegments[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    const double side = (k % 2 == 0) ? sides[0] : sides[1];
+    sideSegments[k] = std::max(1, static_cast<int>(std::lround(side / spacing)));
+  }
+
+  LabelledTriangleMesh part;
+  TriangleMesh& mesh = part.Mesh;
+  std::vector<int> segmentLabel; // of profile segment i (from point i to i + 1)
+  std::vector<std::vector<Index>> rows(layers + 1);
+  for (int layer = 0; layer <= layers; ++layer)
+  {
+    const double t = double(layer) / layers;
+    const double z = -0.5 * height + height * t;
+    std::vector<Point3> profile;
+    segmentLabel.clear();
+    for (int k = 0; k < 4; ++k)
+    {
+      const double r = (1.0 - t) * bottomRadii[k] + t * topRadii[k];
+      const double sx = cornerX[k] > 0 ? 1.0 : -1.0, sy = cornerY[k] > 0 ? 1.0 : -1.0;
+      if (r > 0.0)
+      {
+        // The section at height z of the envelope of the rolling ball whose
+        // centre c(h) = corner - r(h) (sx, sy) and radius r(h) vary linearly
+        // with its height h. A ball touches the envelope along the circle of
+        // unit normals n with n . u = alpha = -r' / |c'| (u the unit tangent
+        // of the centre line); the fillet is the arc of it from the contact
+        // normal of one face to the other's, and normal n meets height z on
+        // the ball whose h solves h + r(h) n_z = z. Constant radius: a
+        // horizontal quarter circle.
+        const double slope = (topRadii[k] - bottomRadii[k]) / height;
+        const Point3 u = Normalized(Point3{ -sx * slope, -sy * slope, 1.0 });
+        const double alpha = -slope / std::sqrt(1.0 + 2.0 * slope * slope);
+        const double from = 0.5 * Pi * k, to = 0.5 * Pi * (k + 1);
+        const Point3 first{ std::cos(from), std::sin(from), 0.0 },
+          last{ std::cos(to), std::sin(to), 0.0 };
+        const Point3 e1 = Normalized(first - alpha * u);
+        const Point3 lastAcross = last - alpha * u;
+        const Point3 e2 = Normalized(lastAcross - Dot(lastAcross, e1) * e1);
+        const double sweep = std::atan2(Dot(lastAcross, e2), Dot(lastAcross, e1));
+        const double beta = std::sqrt(1.0 - alpha * alpha);
+        const double bottom = -0.5 * height;
+        for (int i = 0; i <= resolution; ++i)
+        {
+          const double phi = sweep * i / resolution;
+          const Point3 n = alpha * u + beta * (std::cos(phi) * e1 + std::sin(phi) * e2);
+          // h + (r0 + slope (h - bottom)) n_z = z
+          const double h = (z - (bottomRadii[k] - slope * bottom) * n[2]) / (1.0 + slope * n[2]);
+          const double rh = bottomRadii[k] + slope * (h - bottom);
+          profile.push_back(
+            { cornerX[k] - sx * rh + rh * n[0], cornerY[k] - sy * rh + rh * n[1], z });
+          segmentLabel.push_back(i < resolution ? k : -1);
+        }
+      }
+      else
+      {
+        profile.push_back({ cornerX[k], cornerY[k], z });
+        segmentLabel.push_back(-1);
+      }
+      // The straight side to the next corner's arc: interior points only.
+      const int next = (k + 1) % 4;
+      const double rn = (1.0 - t) * bottomRadii[next] + t * topRadii[next];
+      const Point3 from = profile.back();
+      const double nx = cornerX[next] > 0 ? 1.0 : -1.0, ny = cornerY[next] > 0 ? 1.0 : -1.0;
+      // Start of the next arc (angle (k + 1) pi/2 around its centre).
+      const double angle = 0.5 * Pi * (k + 1);
+      const Point3 to{ cornerX[next] - nx * rn + rn * std::cos(angle),
+        cornerY[next] - ny * rn + rn * std::sin(angle), z };
+      for (int i = 1; i < sideSegments[k]; ++i)
+      {
+        const double u = double(i) / sideSegments[k];
+        profile.push_back({ from[0] + u * (to[0] - from[0]), from[1] + u * (to[1] - from[1]), z });
+        segmentLabel.push_back(-1);
+      }
+    }
+    for (const Point3& p : profile)
+    {
+      rows[layer].push_back(static_cast<Index>(mesh.Points.size()));
+      mesh.Points.push_back(p);
+    }
+  }
+  const std::size_t n = rows[0].size();
+  for (int layer = 0; layer < layers; ++layer)
+  {
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t j = (i + 1) % n;
+      AddQuad(mesh, rows[layer][i], rows[layer][j], rows[layer + 1][j], rows[layer + 1][i]);
+      part.FilletId.resize(mesh.Triangles.size(), segmentLabel[i]);
+    }
+  }
+  const int rings = std::max(1, static_cast<int>(std::lround(std::min(halfX, halfY) / spacing)));
+  AddCap(mesh, rows[layers], { 0.0, 0.0, 0.5 * height }, rings, true, &part.FilletId);
+  AddCap(mesh, rows[0], { 0.0, 0.0, -0.5 * height }, rings, false, &part.FilletId);
+  return part;
+}
+
+LabelledTriangleMesh MakeRoundedCylinder(
+  double radius, double height, double topFilletRadius, double bottomFilletRadius, int resolution)
+{
+  RequirePositive(radius, "cylinder radius");
+  RequirePositive(height, "cylinder height");
+  RequireFilletRadius(topFilletRadius);
+  RequireFilletRadius(bottomFilletRadius);
+  if (std::max(topFilletRadius, bottomFilletRadius) > radius ||
+    topFilletRadius + bottomFilletRadius > height)
+  {
+    throw std::invalid_argument("the rim fillets do not fit the cylinder");
+  }
+  resolution = std::max(resolution, 2);
+  const int around = 16 * resolution;
+  const double spacing = 2.0 * Pi * radius / around;
+  // The profile in (distance from the axis, z), from the top pole to the
+  // bottom pole (both excluded), with the label of the segment before each point.
+  std::vector<std::array<double, 2>> profile;
+  std::vector<int> labelBefore;
+  auto straight = [&](double r0, double z0, double r1, double z1, bool includeEnd)
+  {
+    const double length = std::hypot(r1 - r0, z1 - z0);
+    const int segments = std::max(1, static_cast<int>(std::lround(length / spacing)));
+    for (int i = 1; i <= segments; ++i)
+    {
+      if (i == segments && !includeEnd)
+      {
+        break;
+      }
+      const double u = double(i) / segments;
+      profile.push_back({ r0 + u * (r1 - r0), z0 + u * (z1 - z0) });
+      labelBefore.push_back(-1);
+    }
+  };
+  auto arc = [&](double cr, double cz, double rho, double from, double to, int label)
+  {
+    for (int i = 1; i <= resolution; ++i)
+    {
+      const double angle = from + (to - from) * i / resolution;
+      profile.push_back({ cr + rho * std::cos(angle), cz + rho * std::sin(angle) });
+      labelBefore.push_back(label);
+    }
+  };
+  const double top = 0.5 * height, bottom = -0.5 * height;
+  const double rt = topFilletRadius, rb = bottomFilletRadius;
+  straight(0.0, top, radius - rt, top, true);
+  if (rt > 0.0)
+  {
+    arc(radius - rt, top - rt, rt, 0.5 * Pi, 0.0, 0);
+  }
+  straight(radius, top - rt, radius, bottom + rb, true);
+  if (rb > 0.0)
+  {
+    arc(radius - rb, bottom + rb, rb, 0.0, -0.5 * Pi, 1);
+  }
+  straight(radius - rb, bottom, 0.0, bottom, false);
+
+  LabelledTriangleMesh part;
+  TriangleMesh& mesh = part.Mesh;
+  auto ring = [around](std::size_t i, int k)
+  { return static_cast<Index>(i * around + k % around); };
+  for (const auto& p : profile)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      const double angle = 2.0 * Pi * k / around;
+      mesh.Points.push_back({ p[0] * std::cos(angle), p[0] * std::sin(angle), p[1] });
+    }
+  }
+  const Index topPole = static_cast<Index>(mesh.Points.size());
+  mesh.Points.push_back({ 0.0, 0.0, top });
+  const Index bottomPole = topPole + 1;
+  mesh.Points.push_back({ 0.0, 0.0, bottom });
+  for (int k = 0; k < around; ++k)
+  {
+    mesh.Triangles.push_back({ topPole, ring(0, k), ring(0, k + 1) });
+    part.FilletId.push_back(-1);
+  }
+  for (std::size_t i = 0; i + 1 < profile.size(); ++i)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      AddQuad(mesh, ring(i, k), ring(i + 1, k), ring(i + 1, k + 1), ring(i, k + 1));
+      part.FilletId.resize(mesh.Triangles.size(), labelBefore[i + 1]);
+    }
+  }
+  const std::size_t last = profile.size() - 1;
+  for (int k = 0; k < around; ++k)
+  {
+    mesh.Triangles.push_back({ bottomPole, ring(last, k + 1), ring(last, k) });
+    part.FilletId.push_back(-1);
+  }
+  return part;
+}
+
+AreaVolume LBlockAreaVolume(const Point3& sides)
+{
+  const double x = sides[0], y = sides[1], z = sides[2];
+  // Three quarters of the box; the removed quadrant takes x/2 + y/2 of the
+  // outer perimeter and adds the same length of inner walls.
+  return { 2 * 0.75 * x * y + 2 * (x + y) * z, 0.75 * x * y * z };
+}
+
+AreaVolume RoundedBoxAreaVolume(const Point3& sides, double r)
+{
+  const double a = sides[0] - 2 * r, b = sides[1] - 2 * r, c = sides[2] - 2 * r;
+  return { 2 * (a * b + b * c + c * a) + 2 * Pi * r * (a + b + c) + 4 * Pi * r * r,
+    a * b * c + 2 * r * (a * b + b * c + c * a) + Pi * r * r * (a + b + c) +
+      4.0 / 3.0 * Pi * r * r * r };
+}
+
+AreaVolume CapsuleAreaVolume(double radius, double axisLength)
+{
+  return RoundedBoxAreaVolume({ 2 * radius, 2 * radius, axisLength + 2 * radius }, radius);
+}
+
+AreaVolume TorusAreaVolume(double majorRadius, double minorRadius)
+{
+  return { 4 * Pi * Pi * majorRadius * minorRadius,
+    2 * Pi * Pi * majorRadius * minorRadius * minorRadius };
+}
+
+AreaVolume CylinderAreaVolume(double radius, double height)
+{
+  return { 2 * Pi * radius * height + 2 * Pi * radius * radius, Pi * radius * radius * height };
+}
+}

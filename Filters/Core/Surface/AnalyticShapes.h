@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Closed, manifold, outward-oriented triangle meshes of shapes whose medial
+// axis is known exactly: the ground truths of the test suite. Every vertex
+// lies exactly on the analytic surface.
+#ifndef medialaxis_AnalyticShapes_h
+#define medialaxis_AnalyticShapes_h
+
+#include "Mesh/PolygonMesh.h"
+
+namespace medialaxis
+{
+/// An axis-aligned box of the given full side lengths, centred at the origin,
+/// whose edges and corners are rounded with radius `filletRadius` (quarter
+/// cylinders on edges, sphere octants on corners): the Minkowski sum of a
+/// smaller box with a ball. filletRadius = 0 gives a sharp box; equal sides
+/// and filletRadius = side / 2 give a sphere. `resolution` is the number of
+/// segments along a quarter circle (a sharp box uses it per side).
+TriangleMesh MakeRoundedBox(const Point3& sides, double filletRadius, int resolution);
+
+/// Sphere centred at the origin (a cube-sphere: rounded box with no flat part).
+TriangleMesh MakeSphere(double radius, int resolution);
+
+/// Capsule along z: the points within `radius` of the segment from
+/// (0, 0, -axisLength / 2) to (0, 0, axisLength / 2).
+TriangleMesh MakeCapsule(double radius, double axisLength, int resolution);
+
+/// Torus around the z axis with the given centre-circle and tube radii.
+TriangleMesh MakeTorus(double majorRadius, double minorRadius, int resolution);
+
+/// Closed cylinder along z, centred at the origin.
+TriangleMesh MakeCylinder(double radius, double height, int resolution);
+
+/// L-shaped block: the box [-x/2, x/2] x [-y/2, y/2] x [-z/2, z/2] minus
+/// its quadrant x > 0, y > 0 (through the whole thickness), so that the
+/// vertical edge at x = y = 0 is a sharp concave (reflex) edge. Every face is
+/// a regular grid with `resolution` cells per half side.
+TriangleMesh MakeLBlock(const Point3& sides, int resolution);
+
+/// A generated part whose fillet faces are known exactly: FilletId[t] is the
+/// fillet triangle t lies on, -1 for triangles on no fillet.
+struct LabelledTriangleMesh
+{
+  TriangleMesh Mesh;
+  std::vector<int> FilletId;
+};
+
+/// Prism along z over the rectangle sides[0] x sides[1] (centred at the
+/// origin, height sides[2]) with flat, sharp-edged caps. Its four vertical
+/// edges, numbered counter-clockwise from the (+x, +y) one, are rounded:
+/// edge k has radius bottomRadii[k] at the bottom cap varying linearly to
+/// topRadii[k] at the top (both 0: a sharp edge; different: a
+/// variable-radius fillet, the exact envelope of a ball rolling between the
+/// two faces whose radius varies linearly with its centre's height). FilletId
+/// k labels edge k's fillet. `resolution` is the number of segments along each
+/// arc; the flat parts get about 2 * resolution segments along the longest side.
+LabelledTriangleMesh MakeFilletedPrism(const Point3& sides,
+  const std::array<double, 4>& bottomRadii, const std::array<double, 4>& topRadii, int resolution);
+
+/// Cylinder along z (centred at the origin) whose top and bottom rims are
+/// rounded with the given fillet radii (0: a sharp rim). FilletId 0 labels
+/// the top fillet, 1 the bottom one. `resolution` is the number of segments
+/// along each rim's quarter-circle arc; the circles around the axis get
+/// 16 * resolution segments.
+LabelledTriangleMesh MakeRoundedCylinder(
+  double radius, double height, double topFilletRadius, double bottomFilletRadius, int resolution);
+
+/// Exact area and volume of the analytic shapes above (not of their meshes).
+struct AreaVolume
+{
+  double Area;
+  double Volume;
+};
+AreaVolume RoundedBoxAreaVolume(const Point3& sides, double filletRadius);
+AreaVolume CapsuleAreaVolume(double radius, double axisLength);
+AreaVolume TorusAreaVolume(double majorRadius, double minorRadius);
+AreaVolume CylinderAreaVolume(double radius, double height);
+AreaVolume LBlockAreaVolume(const Point3& sides);
+}
+
+#endif

@@ -1,0 +1,843 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Surface/SurfacePreparation.h"
+
+#include "Geometry/Vec3.h"
+#include "Mesh/TriangleAdjacency.h"
+#include "Support/DisjointSets.h"
+#include "Surface/SelfIntersection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <unordered_map>
+
+namespace medialaxis
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+std::string Count(std::size_t n, const char* singular, const char* plural)
+{
+  return std::to_string(n) + ' ' + (n == 1 ? singular : plural);
+}
+
+struct CellKey
+{
+  std::int64_t I, J, K;
+  bool operator==(const CellKey& o) const { return I == o.I && J == o.J && K == o.K; }
+};
+struct CellKeyHash
+{
+  std::size_t operator()(const CellKey& k) const
+  {
+    std::uint64_t h = static_cast<std::uint64_t>(k.I) * 0x9E3779B97F4A7C15ull;
+    h ^= static_cast<std::uint64_t>(k.J) + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
+    h ^= static_cast<std::uint64_t>(k.K) + 0x94D049BB133111EBull + (h << 6) + (h >> 2);
+    return static_cast<std::size_t>(h);
+  }
+};
+
+// Maps every point to the first earlier point within `tolerance` (a hash grid
+// of cell size `tolerance`; 27 neighbour cells are searched). Written by hand
+// because it must be deterministic in input order and run in O(n).
+std::vector<Index> MergeCoincidentPoints(
+  const std::vector<Point3>& points, const std::vector<char>& used, double tolerance)
+{
+  std::vector<Index> representative(points.size(), -1);
+  if (tolerance > 0.0)
+  {
+    std::unordered_map<CellKey, std::vector<Index>, CellKeyHash> grid;
+    grid.reserve(points.size());
+    const double tol2 = tolerance * tolerance;
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      if (!used[i])
+      {
+        continue;
+      }
+      const Point3& p = points[i];
+      const CellKey key{ static_cast<std::int64_t>(std::floor(p[0] / tolerance)),
+        static_cast<std::int64_t>(std::floor(p[1] / tolerance)),
+        static_cast<std::int64_t>(std::floor(p[2] / tolerance)) };
+      Index found = -1;
+      for (int dx = -1; dx <= 1 && found < 0; ++dx)
+      {
+        for (int dy = -1; dy <= 1 && found < 0; ++dy)
+        {
+          for (int dz = -1; dz <= 1 && found < 0; ++dz)
+          {
+            auto it = grid.find({ key.I + dx, key.J + dy, key.K + dz });
+            if (it == grid.end())
+            {
+              continue;
+            }
+            for (Index j : it->second)
+            {
+              const Point3 d = (points[j] - p);
+              if (Dot(d, d) <= tol2 && (found < 0 || j < found))
+              {
+                found = j;
+              }
+            }
+          }
+        }
+      }
+      if (found >= 0)
+      {
+        representative[i] = found;
+      }
+      else
+      {
+        representative[i] = static_cast<Index>(i);
+        grid[key].push_back(static_cast<Index>(i));
+      }
+    }
+    return representative;
+  }
+
+  struct ExactHash
+  {
+    std::size_t operator()(const Point3& p) const
+    {
+      std::size_t h = 0;
+      for (double c : p)
+      {
+        h = h * 1000003u ^ std::hash<double>()(c == 0.0 ? 0.0 : c); // -0 == +0
+      }
+      return h;
+    }
+  };
+  std::unordered_map<Point3, Index, ExactHash> seen;
+  seen.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    if (used[i])
+    {
+      representative[i] = seen.emplace(points[i], static_cast<Index>(i)).first->second;
+    }
+  }
+  return representative;
+}
+
+// A zero-area "needle": three distinct but (nearly) collinear vertices.
+bool IsNeedle(const std::vector<Point3>& points, const Triangle& tri)
+{
+  const Point3 e0 = (points[tri[1]] - points[tri[0]]);
+  const Point3 e1 = (points[tri[2]] - points[tri[0]]);
+  const Point3 e2 = (points[tri[2]] - points[tri[1]]);
+  const double longest = std::max({ Dot(e0, e0), Dot(e1, e1), Dot(e2, e2) });
+  return Norm(Cross(e0, e1)) <= 1e-12 * longest;
+}
+
+// Replaces needles (common in CAD exports) by splitting the neighbour across
+// their longest edge at the middle vertex, which keeps the surface closed.
+// Returns the number of needles removed; unresolvable needles are kept.
+std::size_t AbsorbNeedles(
+  const std::vector<Point3>& points, std::vector<Triangle>& triangles, std::size_t& splitNeighbours)
+{
+  std::vector<std::size_t> needles;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    if (IsNeedle(points, triangles[t]))
+    {
+      needles.push_back(t);
+    }
+  }
+  if (needles.empty())
+  {
+    return 0;
+  }
+  const auto halfEdges = SortedHalfEdges(triangles);
+  std::vector<char> alive(triangles.size(), 1), touched(triangles.size(), 0);
+  std::vector<Triangle> added;
+  std::size_t removed = 0;
+  for (std::size_t t : needles)
+  {
+    if (touched[t])
+    {
+      continue;
+    }
+    const Triangle tri = triangles[t];
+    // Middle vertex c is opposite the longest edge (a, b).
+    int longestK = 0;
+    double longestLength = -1.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Point3 e = (points[tri[(k + 1) % 3]] - points[tri[k]]);
+      if (Dot(e, e) > longestLength)
+      {
+        longestLength = Dot(e, e);
+        longestK = k;
+      }
+    }
+    const Index a = tri[longestK], b = tri[(longestK + 1) % 3], c = tri[(longestK + 2) % 3];
+    const HalfEdge probe{ std::min(a, b), std::max(a, b), -1, false };
+    auto first = std::lower_bound(halfEdges.begin(), halfEdges.end(), probe);
+    std::vector<Index> others;
+    for (auto it = first; it != halfEdges.end() && it->Lo == probe.Lo && it->Hi == probe.Hi; ++it)
+    {
+      if (it->Tri != static_cast<Index>(t))
+      {
+        others.push_back(it->Tri);
+      }
+    }
+    if (others.size() != 1 || touched[others[0]])
+    {
+      continue;
+    }
+    const Index n = others[0];
+    const Triangle nb = triangles[n];
+    int pa = 0;
+    while (pa < 3 && !(nb[pa] == a || nb[pa] == b))
+    {
+      ++pa;
+    }
+    // Neighbour in cyclic order (p, q, x) with {p, q} == {a, b}.
+    Index p = nb[pa], q = nb[(pa + 1) % 3], x = nb[(pa + 2) % 3];
+    if (!((q == a || q == b) && q != p))
+    {
+      p = nb[(pa + 2) % 3];
+      q = nb[pa];
+      x = nb[(pa + 1) % 3];
+    }
+    if (x == c)
+    {
+      continue; // the neighbour is the needle's mirror image; dedup handles it
+    }
+    alive[t] = 0;
+    alive[n] = 0;
+    touched[t] = touched[n] = 1;
+    added.push_back({ p, c, x });
+    added.push_back({ c, q, x });
+    ++removed;
+    ++splitNeighbours;
+  }
+  std::vector<Triangle> kept;
+  kept.reserve(triangles.size() + added.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    if (alive[t])
+    {
+      kept.push_back(triangles[t]);
+    }
+  }
+  kept.insert(kept.end(), added.begin(), added.end());
+  triangles.swap(kept);
+  return removed;
+}
+
+// Absorbs needles until none is left or no progress is made (splitting a
+// neighbour that is itself nearly flat makes new needles), then drops the
+// rest: no later stage may see a zero-area triangle (CGAL's intersection
+// tests require non-degenerate ones). Dropping can open the surface, which
+// the closedness check then reports.
+std::size_t RemoveNeedles(
+  const std::vector<Point3>& points, std::vector<Triangle>& triangles, std::size_t& splitNeighbours)
+{
+  std::size_t removed = 0;
+  for (int round = 0; round < 8; ++round)
+  {
+    const std::size_t absorbed = AbsorbNeedles(points, triangles, splitNeighbours);
+    removed += absorbed;
+    if (absorbed == 0)
+    {
+      break;
+    }
+  }
+  const std::size_t before = triangles.size();
+  triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
+                    [&points](const Triangle& t) { return IsNeedle(points, t); }),
+    triangles.end());
+  return removed + (before - triangles.size());
+}
+
+// Generalised winding number of point p with respect to a set of triangles
+// (sum of signed solid angles, Van Oosterom and Strackee).
+double WindingNumber(const Point3& p, const std::vector<Point3>& points,
+  const std::vector<Triangle>& triangles, const std::vector<Index>& subset)
+{
+  double total = 0.0;
+  for (Index t : subset)
+  {
+    const Point3 a = (points[triangles[t][0]] - p);
+    const Point3 b = (points[triangles[t][1]] - p);
+    const Point3 c = (points[triangles[t][2]] - p);
+    const double la = Norm(a), lb = Norm(b), lc = Norm(c);
+    const double numerator = Dot(a, Cross(b, c));
+    const double denominator = la * lb * lc + Dot(a, b) * lc + Dot(b, c) * la + Dot(c, a) * lb;
+    total += 2.0 * std::atan2(numerator, denominator);
+  }
+  return total / (4.0 * Pi);
+}
+
+double SignedVolumeOf(const std::vector<Point3>& points, const std::vector<Triangle>& triangles,
+  const std::vector<Index>& subset)
+{
+  if (subset.empty())
+  {
+    return 0.0;
+  }
+  // Relative to one of the component's points, for accuracy far from the origin.
+  const Point3 origin = points[triangles[subset[0]][0]];
+  double sixVolume = 0.0;
+  for (Index t : subset)
+  {
+    const Point3 a = (points[triangles[t][0]] - origin);
+    const Point3 b = (points[triangles[t][1]] - origin);
+    const Point3 c = (points[triangles[t][2]] - origin);
+    sixVolume += Dot(a, Cross(b, c));
+  }
+  return sixVolume / 6.0;
+}
+
+// Whether triangles a and b are within `rings` vertex rings of each other on
+// the surface (a breadth-first search over the vertex graph from a's
+// corners). Crossings of such near neighbours are local folds of the mesh;
+// crossings of triangles far apart on the surface mean it passes through
+// itself.
+bool AreSurfaceNeighbours(const std::vector<Triangle>& triangles,
+  const std::vector<std::vector<Index>>& vertexTriangles, Index a, Index b, int rings)
+{
+  std::unordered_map<Index, int> depth;
+  std::vector<Index> frontier(triangles[a].begin(), triangles[a].end());
+  for (Index v : frontier)
+  {
+    depth.emplace(v, 0);
+  }
+  auto isCornerOfB = [&](Index v)
+  { return v == triangles[b][0] || v == triangles[b][1] || v == triangles[b][2]; };
+  for (int ring = 0; ring <= rings; ++ring)
+  {
+    std::vector<Index> next;
+    for (Index v : frontier)
+    {
+      if (isCornerOfB(v))
+      {
+        return true;
+      }
+      for (Index t : vertexTriangles[v])
+      {
+        for (Index w : triangles[t])
+        {
+          if (depth.emplace(w, ring + 1).second)
+          {
+            next.push_back(w);
+          }
+        }
+      }
+    }
+    frontier.swap(next);
+  }
+  return false;
+}
+
+std::string Percent(double fraction)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.2g%%", 100.0 * fraction);
+  return text;
+}
+
+std::string Location(const TriangleCrossing& c)
+{
+  char text[96];
+  std::snprintf(text, sizeof(text), "(%.6g, %.6g, %.6g)", 0.5 * (c.Lo[0] + c.Hi[0]),
+    0.5 * (c.Lo[1] + c.Hi[1]), 0.5 * (c.Lo[2] + c.Hi[2]));
+  return text;
+}
+}
+
+double SignedVolume(const TriangleMesh& mesh)
+{
+  std::vector<Index> all(mesh.Triangles.size());
+  std::iota(all.begin(), all.end(), Index(0));
+  return SignedVolumeOf(mesh.Points, mesh.Triangles, all);
+}
+
+double SurfaceArea(const TriangleMesh& mesh)
+{
+  double twiceArea = 0.0;
+  for (const Triangle& t : mesh.Triangles)
+  {
+    twiceArea +=
+      Norm(Cross((mesh.Points[t[1]] - mesh.Points[t[0]]), (mesh.Points[t[2]] - mesh.Points[t[0]])));
+  }
+  return 0.5 * twiceArea;
+}
+
+SurfacePreparationReport PrepareSurface(
+  const TriangleMesh& input, TriangleMesh& output, const SurfacePreparationOptions& options)
+{
+  SurfacePreparationReport report;
+  report.InputPoints = input.Points.size();
+  report.InputTriangles = input.Triangles.size();
+  output = TriangleMesh();
+
+  if (input.Triangles.empty())
+  {
+    report.Error = "surface is empty: it has no triangles";
+    return report;
+  }
+  const Index np = static_cast<Index>(input.Points.size());
+  std::vector<char> used(input.Points.size(), 0);
+  for (const Triangle& t : input.Triangles)
+  {
+    for (Index v : t)
+    {
+      if (v < 0 || v >= np)
+      {
+        report.Error = "surface has a triangle referencing point " + std::to_string(v) +
+          ", outside [0, " + std::to_string(np) + ")";
+        return report;
+      }
+      used[v] = 1;
+    }
+  }
+
+  // 1. Non-finite coordinates, and the bounding box of what is used.
+  Point3 lo{ HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  for (std::size_t i = 0; i < input.Points.size(); ++i)
+  {
+    if (!used[i])
+    {
+      continue;
+    }
+    const Point3& p = input.Points[i];
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+    {
+      ++report.NonFinitePoints;
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  if (report.NonFinitePoints)
+  {
+    report.Error = "surface has " + Count(report.NonFinitePoints, "point", "points") +
+      " with NaN or infinite coordinates";
+    return report;
+  }
+  const double diagonal = Norm((hi - lo));
+  double extent = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    extent = std::max({ extent, std::fabs(lo[k]), std::fabs(hi[k]) });
+  }
+  if (!(diagonal > 0.0) || !std::isfinite(diagonal))
+  {
+    report.Error = diagonal > 0.0 ? "surface is too large: its bounding box overflows"
+                                  : "surface is degenerate: all its points coincide";
+    return report;
+  }
+
+  // 2. Merge coincident points. A tolerance too small for the grid's integer
+  // cells (points extremely far from the origin) falls back to exact merging.
+  double tolerance = options.RelativeMergeTolerance * diagonal;
+  if (tolerance > 0.0 && extent / tolerance > 1e15)
+  {
+    tolerance = 0.0;
+  }
+  const auto representative = MergeCoincidentPoints(input.Points, used, tolerance);
+  for (std::size_t i = 0; i < representative.size(); ++i)
+  {
+    report.MergedPoints += (used[i] && representative[i] != static_cast<Index>(i)) ? 1 : 0;
+  }
+
+  // 3. Drop triangles with a repeated vertex, then zero-area needles.
+  std::vector<Triangle> triangles;
+  triangles.reserve(input.Triangles.size());
+  for (const Triangle& t : input.Triangles)
+  {
+    const Triangle m{ representative[t[0]], representative[t[1]], representative[t[2]] };
+    if (m[0] == m[1] || m[1] == m[2] || m[0] == m[2])
+    {
+      ++report.DegenerateTriangles;
+      continue;
+    }
+    triangles.push_back(m);
+  }
+  report.DegenerateTriangles += RemoveNeedles(input.Points, triangles, report.SplitNeighbours);
+
+  // 4. Drop triangles whose vertex set repeats an earlier one.
+  {
+    std::vector<std::pair<Triangle, Index>> keys(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      Triangle k = triangles[t];
+      std::sort(k.begin(), k.end());
+      keys[t] = { k, static_cast<Index>(t) };
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<char> keep(triangles.size(), 1);
+    for (std::size_t i = 1; i < keys.size(); ++i)
+    {
+      if (keys[i].first == keys[i - 1].first)
+      {
+        keep[keys[i].second] = 0;
+        ++report.DuplicateTriangles;
+      }
+    }
+    std::vector<Triangle> unique;
+    unique.reserve(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      if (keep[t])
+      {
+        unique.push_back(triangles[t]);
+      }
+    }
+    triangles.swap(unique);
+  }
+  if (triangles.empty())
+  {
+    report.Error = "surface has no valid triangles: all " + std::to_string(report.InputTriangles) +
+      " are degenerate or duplicates";
+    return report;
+  }
+
+  // 5. Edge incidence: boundary and non-manifold edges.
+  const auto halfEdges = SortedHalfEdges(triangles);
+  struct Adjacency
+  {
+    Index A, B;      // the two triangles
+    Index U, V;      // the edge's vertices
+    bool Consistent; // traversed in opposite directions
+  };
+  std::vector<Adjacency> adjacencies;
+  adjacencies.reserve(halfEdges.size() / 2);
+  for (std::size_t i = 0; i < halfEdges.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < halfEdges.size() && halfEdges[j].Lo == halfEdges[i].Lo &&
+      halfEdges[j].Hi == halfEdges[i].Hi)
+    {
+      ++j;
+    }
+    if (j - i == 1)
+    {
+      ++report.BoundaryEdges;
+    }
+    else if (j - i > 2)
+    {
+      ++report.NonManifoldEdges;
+    }
+    else
+    {
+      adjacencies.push_back({ halfEdges[i].Tri, halfEdges[i + 1].Tri, halfEdges[i].Lo,
+        halfEdges[i].Hi, halfEdges[i].Forward != halfEdges[i + 1].Forward });
+    }
+    i = j;
+  }
+  if (report.BoundaryEdges || report.NonManifoldEdges)
+  {
+    if (report.BoundaryEdges)
+    {
+      report.Error =
+        "surface is not closed: " + Count(report.BoundaryEdges, "boundary edge", "boundary edges");
+    }
+    if (report.NonManifoldEdges)
+    {
+      report.Error += std::string(report.Error.empty() ? "surface is not manifold: " : "; and ") +
+        Count(report.NonManifoldEdges, "edge is", "edges are") +
+        " shared by more than two triangles";
+    }
+    return report;
+  }
+
+  // 6. Non-manifold vertices: the corners around a vertex must form one fan.
+  {
+    DisjointSets corners(3 * triangles.size());
+    auto cornerOf = [&triangles](Index t, Index v)
+    {
+      const Triangle& tri = triangles[t];
+      return 3 * t + (tri[0] == v ? 0 : (tri[1] == v ? 1 : 2));
+    };
+    for (const Adjacency& adj : adjacencies)
+    {
+      corners.Union(cornerOf(adj.A, adj.U), cornerOf(adj.B, adj.U));
+      corners.Union(cornerOf(adj.A, adj.V), cornerOf(adj.B, adj.V));
+    }
+    std::vector<Index> fanRoot(input.Points.size(), -1);
+    std::vector<char> counted(input.Points.size(), 0);
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Index v = triangles[t][k];
+        const Index root = corners.Find(static_cast<Index>(3 * t + k));
+        if (fanRoot[v] < 0)
+        {
+          fanRoot[v] = root;
+        }
+        else if (fanRoot[v] != root && !counted[v])
+        {
+          counted[v] = 1;
+          ++report.NonManifoldVertices;
+        }
+      }
+    }
+    if (report.NonManifoldVertices)
+    {
+      report.Error = "surface is not manifold: " +
+        Count(report.NonManifoldVertices, "vertex joins", "vertices join") +
+        " several separate sheets of triangles";
+      return report;
+    }
+  }
+
+  // 7. Consistent orientation per connected component (breadth-first).
+  const std::size_t nt = triangles.size();
+  std::vector<std::vector<std::pair<Index, bool>>> neighbours(nt);
+  for (const Adjacency& adj : adjacencies)
+  {
+    neighbours[adj.A].push_back({ adj.B, adj.Consistent });
+    neighbours[adj.B].push_back({ adj.A, adj.Consistent });
+  }
+  std::vector<Index> component(nt, -1);
+  std::vector<char> flip(nt, 0);
+  std::vector<std::vector<Index>> members;
+  std::size_t nonOrientable = 0;
+  for (std::size_t seed = 0; seed < nt; ++seed)
+  {
+    if (component[seed] >= 0)
+    {
+      continue;
+    }
+    const Index id = static_cast<Index>(members.size());
+    members.emplace_back();
+    std::vector<Index> queue{ static_cast<Index>(seed) };
+    component[seed] = id;
+    for (std::size_t head = 0; head < queue.size(); ++head)
+    {
+      const Index t = queue[head];
+      members[id].push_back(t);
+      for (const auto& [n, consistent] : neighbours[t])
+      {
+        const char wanted = flip[t] ^ (consistent ? 0 : 1);
+        if (component[n] < 0)
+        {
+          component[n] = id;
+          flip[n] = wanted;
+          queue.push_back(n);
+        }
+        else if (flip[n] != wanted)
+        {
+          ++nonOrientable;
+        }
+      }
+    }
+    // Flip the smaller side so that the reported count is the real defect.
+    std::size_t flipped = 0;
+    for (Index t : members[id])
+    {
+      flipped += flip[t];
+    }
+    if (2 * flipped > members[id].size())
+    {
+      for (Index t : members[id])
+      {
+        flip[t] ^= 1;
+      }
+      flipped = members[id].size() - flipped;
+    }
+    report.ReorientedTriangles += flipped;
+  }
+  if (nonOrientable)
+  {
+    report.Error = "surface is not orientable (like a Moebius strip or Klein bottle)";
+    return report;
+  }
+  if (report.ReorientedTriangles && !options.FixOrientation)
+  {
+    report.Error = "surface orientation is inconsistent: " +
+      Count(report.ReorientedTriangles, "triangle disagrees", "triangles disagree") +
+      " with its neighbours";
+    return report;
+  }
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    if (flip[t])
+    {
+      std::swap(triangles[t][1], triangles[t][2]);
+    }
+  }
+  report.Components = members.size();
+
+  // 8. Self-intersection. Shells that cross each other, or a shell passing
+  // through itself, bound no solid; the nesting test below would misread
+  // them (overlapping spheres would become a sphere with a cavity). Scanned
+  // and decimated meshes often have a few neighbouring triangles folded over
+  // each other; those are local and only noted.
+  report.Crossings = options.KnownCrossings ? *options.KnownCrossings
+                                            : FindSelfIntersections(input.Points, triangles);
+  report.SelfIntersectionTested = true;
+  const std::vector<TriangleCrossing>& crossings = report.Crossings;
+  report.SelfIntersections = crossings.size();
+  if (!crossings.empty())
+  {
+    const TriangleCrossing* betweenShells = nullptr;
+    for (const TriangleCrossing& c : crossings)
+    {
+      if (component[c.A] != component[c.B])
+      {
+        betweenShells = betweenShells ? betweenShells : &c;
+        ++report.CrossingShells;
+      }
+    }
+    if (betweenShells)
+    {
+      report.Error = "surface intersects itself: " +
+        Count(report.CrossingShells, "pair of triangles", "pairs of triangles") +
+        " of separate shells cross, e.g. near " + Location(*betweenShells) +
+        " (overlapping shells must be merged into one surface first)";
+      return report;
+    }
+    std::vector<std::vector<Index>> vertexTriangles(input.Points.size());
+    for (std::size_t t = 0; t < nt; ++t)
+    {
+      for (Index v : triangles[t])
+      {
+        vertexTriangles[v].push_back(static_cast<Index>(t));
+      }
+    }
+    // Where the surface passes through itself: the box of all crossings of
+    // triangles far apart on the surface.
+    const TriangleCrossing* farApart = nullptr;
+    Point3 lo{ HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+    for (const TriangleCrossing& c : crossings)
+    {
+      if (!AreSurfaceNeighbours(triangles, vertexTriangles, c.A, c.B, options.LocalFoldRings))
+      {
+        farApart = farApart ? farApart : &c;
+        ++report.CrossingFarApart;
+        for (int k = 0; k < 3; ++k)
+        {
+          lo[k] = std::min(lo[k], c.Lo[k]);
+          hi[k] = std::max(hi[k], c.Hi[k]);
+        }
+      }
+    }
+    report.PassThroughExtent = farApart ? Norm(hi - lo) / diagonal : 0.0;
+    if (report.PassThroughExtent > options.MaxPassThroughExtent)
+    {
+      report.Error = "surface intersects itself: " +
+        Count(report.CrossingFarApart, "pair of triangles", "pairs of triangles") +
+        " far apart on the surface cross, e.g. near " + Location(*farApart) +
+        " (the surface passes through itself)";
+      return report;
+    }
+    const std::size_t folds = crossings.size() - report.CrossingFarApart;
+    if (folds)
+    {
+      report.Notes.push_back(Count(folds, "pair of neighbouring triangles overlaps",
+                               "pairs of neighbouring triangles overlap") +
+        " (local folds): kept");
+    }
+    if (farApart)
+    {
+      report.Notes.push_back("the surface touches or passes through itself near " +
+        Location(*farApart) + " (" + Count(report.CrossingFarApart, "pair", "pairs") +
+        " of triangles, within " + Percent(report.PassThroughExtent) +
+        " of the diagonal): kept, the medial axis may be wrong there");
+    }
+  }
+
+  // 9. Outward orientation: a shell nested inside an odd number of others
+  // bounds a cavity and must face inward; every other shell faces outward.
+  // The nesting test costs components x triangles, so it is skipped (every
+  // shell made outward) for surfaces with very many components.
+  constexpr std::size_t maxNestingComponents = 64;
+  const bool testNesting = members.size() > 1 && members.size() <= maxNestingComponents;
+  if (members.size() > maxNestingComponents)
+  {
+    report.Notes.push_back("nesting of shells not tested (" + std::to_string(members.size()) +
+      " components): every shell oriented outward");
+  }
+  for (std::size_t c = 0; c < members.size(); ++c)
+  {
+    int depth = 0;
+    if (testNesting)
+    {
+      const Point3& probe = input.Points[triangles[members[c][0]][0]];
+      for (std::size_t other = 0; other < members.size(); ++other)
+      {
+        if (other != c &&
+          std::fabs(WindingNumber(probe, input.Points, triangles, members[other])) > 0.5)
+        {
+          ++depth;
+        }
+      }
+    }
+    const double volume = SignedVolumeOf(input.Points, triangles, members[c]);
+    const bool wantPositive = depth % 2 == 0;
+    if ((volume < 0.0) == wantPositive && volume != 0.0)
+    {
+      if (!options.FixOrientation)
+      {
+        report.Error = "surface is oriented inward: normals point into the solid";
+        return report;
+      }
+      for (Index t : members[c])
+      {
+        std::swap(triangles[t][1], triangles[t][2]);
+      }
+      ++report.InwardComponents;
+    }
+  }
+
+  // 10. Compact: keep only the points that triangles use, in first-use order.
+  std::vector<Index> newId(input.Points.size(), -1);
+  output.Triangles.reserve(triangles.size());
+  for (Triangle t : triangles)
+  {
+    for (Index& v : t)
+    {
+      if (newId[v] < 0)
+      {
+        newId[v] = static_cast<Index>(output.Points.size());
+        output.Points.push_back(input.Points[v]);
+      }
+      v = newId[v];
+    }
+    output.Triangles.push_back(t);
+  }
+  std::size_t usedInput = 0;
+  for (char u : used)
+  {
+    usedInput += u;
+  }
+  report.UnusedPoints = input.Points.size() - usedInput;
+
+  report.Area = SurfaceArea(output);
+  report.Volume = SignedVolume(output);
+  if (!(report.Volume > 1e-12 * diagonal * diagonal * diagonal))
+  {
+    report.Error = "surface encloses no volume (a flat or doubly covered sheet)";
+    return report;
+  }
+
+  auto note = [&report](std::size_t n, const char* singular, const char* plural, const char* what)
+  {
+    if (n)
+    {
+      report.Notes.push_back(Count(n, singular, plural) + ' ' + what);
+    }
+  };
+  note(report.MergedPoints, "coincident point", "coincident points", "merged");
+  note(report.UnusedPoints, "unused point", "unused points", "dropped");
+  note(report.DegenerateTriangles, "degenerate triangle", "degenerate triangles", "dropped");
+  note(report.DuplicateTriangles, "duplicate triangle", "duplicate triangles", "dropped");
+  note(report.ReorientedTriangles, "triangle", "triangles", "flipped to agree with neighbours");
+  note(report.InwardComponents, "inward shell", "inward shells", "flipped to face outward");
+  if (report.Components > 1)
+  {
+    report.Notes.push_back(std::to_string(report.Components) + " separate shells");
+  }
+  return report;
+}
+}

@@ -1,0 +1,680 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The library's only translation unit with CGAL's Delaunay triangulation and
+// AABB tree: they take long to compile, so they are kept together here.
+#include "Voronoi/VoronoiMedialAxis.h"
+
+#include "Geometry/Vec3.h"
+#include "Mesh/TriangleAdjacency.h"
+#include "Support/DisjointSets.h"
+#include "Surface/SurfacePreparation.h"
+#include "Voronoi/MedialComplexCleanup.h"
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Cartesian_converter.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+#include <tbb/task_group.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace medialaxis
+{
+namespace
+{
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using KPoint = K::Point_3;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<Index, K>;
+using CellBase =
+  CGAL::Triangulation_cell_base_with_info_3<Index, K, CGAL::Delaunay_triangulation_cell_base_3<K>>;
+using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
+using Delaunay = CGAL::Delaunay_triangulation_3<K, Tds>;
+
+using SurfaceMesh = CGAL::Surface_mesh<KPoint>;
+using Primitive = CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+using SideOfMesh = CGAL::Side_of_triangle_mesh<SurfaceMesh, K, CGAL::Default, Tree>;
+
+Point3 ToPoint(const KPoint& p)
+{
+  return { p.x(), p.y(), p.z() };
+}
+KPoint ToKernel(const Point3& p)
+{
+  return { p[0], p[1], p[2] };
+}
+
+// The circumcentre of a Delaunay cell. CGAL's inexact construction divides
+// by a determinant that must not be zero; a sliver that is flat to double
+// precision (four sites of a planar face, rounded slightly off it) makes it
+// exactly zero, so those few are constructed exactly. Exact predicates keep
+// finite cells of a 3D triangulation from being truly flat.
+Point3 Circumcentre(const KPoint& p, const KPoint& q, const KPoint& r, const KPoint& s)
+{
+  double nx, ny, nz, den;
+  CGAL::determinants_for_circumcenterC3(p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), r.x(), r.y(),
+    r.z(), s.x(), s.y(), s.z(), nx, ny, nz, den);
+  if (den != 0.0)
+  {
+    return ToPoint(CGAL::circumcenter(p, q, r, s));
+  }
+  using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+  const CGAL::Cartesian_converter<K, Exact> toExact;
+  const Exact::Point_3 c = CGAL::circumcenter(toExact(p), toExact(q), toExact(r), toExact(s));
+  return { CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z()) };
+}
+
+// Surface queries: inside test by ray casting and distance to the surface,
+// over one AABB tree built on first use.
+class SurfaceQueries
+{
+public:
+  explicit SurfaceQueries(const TriangleMesh& surface)
+    : Surface(surface)
+  {
+  }
+
+  void Build()
+  {
+    if (this->TreePtr)
+    {
+      return;
+    }
+    std::vector<SurfaceMesh::Vertex_index> vertices;
+    vertices.reserve(this->Surface.Points.size());
+    for (const Point3& p : this->Surface.Points)
+    {
+      vertices.push_back(this->Mesh.add_vertex(ToKernel(p)));
+    }
+    for (const Triangle& t : this->Surface.Triangles)
+    {
+      this->Mesh.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]);
+    }
+    this->TreePtr =
+      std::make_unique<Tree>(faces(this->Mesh).first, faces(this->Mesh).second, this->Mesh);
+    this->TreePtr->build();
+    this->TreePtr->accelerate_distance_queries();
+    this->Side = std::make_unique<SideOfMesh>(*this->TreePtr);
+
+    // Pseudo-normals: faces, and angle-weighted at vertices.
+    const std::size_t nt = this->Surface.Triangles.size();
+    this->Adjacency = ComputeTriangleAdjacency(this->Surface, 3.14159265358979);
+    this->FaceNormals.resize(nt);
+    this->VertexNormals.assign(this->Surface.Points.size(), Point3{ 0.0, 0.0, 0.0 });
+    for (std::size_t f = 0; f < nt; ++f)
+    {
+      const Triangle& t = this->Surface.Triangles[f];
+      this->FaceNormals[f] = TriangleNormal(this->Surface, static_cast<Index>(f));
+      for (int k = 0; k < 3; ++k)
+      {
+        const Point3& p = this->Surface.Points[t[k]];
+        const Point3 e1 = Normalized(this->Surface.Points[t[(k + 1) % 3]] - p);
+        const Point3 e2 = Normalized(this->Surface.Points[t[(k + 2) % 3]] - p);
+        const double angle = std::acos(std::clamp(Dot(e1, e2), -1.0, 1.0));
+        this->VertexNormals[t[k]] = this->VertexNormals[t[k]] + angle * this->FaceNormals[f];
+      }
+    }
+  }
+
+  bool Inside(const Point3& p) const { return (*this->Side)(ToKernel(p)) == CGAL::ON_BOUNDED_SIDE; }
+
+  /// Inside test by the closest surface point and the angle-weighted
+  /// pseudo-normal of the face, edge or vertex it lies on (Baerentzen and
+  /// Aanaes 2005): exact for a closed manifold, and fast for points near
+  /// the surface, where the AABB search is short.
+  /// `nearPoint` on triangle `nearTriangle` bounds the search.
+  bool InsideByPseudoNormal(const Point3& p, const Point3& nearPoint, Index nearTriangle) const
+  {
+    const Tree::Point_and_primitive_id hint(ToKernel(nearPoint),
+      SurfaceMesh::Face_index(static_cast<SurfaceMesh::size_type>(nearTriangle)));
+    const auto hit = this->TreePtr->closest_point_and_primitive(ToKernel(p), hint);
+    const Point3 q = ToPoint(hit.first);
+    const Index f = static_cast<Index>(hit.second.idx());
+    const Triangle& t = this->Surface.Triangles[f];
+    const Point3 &a = this->Surface.Points[t[0]], &b = this->Surface.Points[t[1]],
+                 &c = this->Surface.Points[t[2]];
+    // Barycentric coordinates of q.
+    const Point3 n = Cross(b - a, c - a);
+    const double area2 = Dot(n, n);
+    const double w[3] = { Dot(Cross(c - b, q - b), n) / area2, Dot(Cross(a - c, q - c), n) / area2,
+      Dot(Cross(b - a, q - a), n) / area2 };
+    constexpr double eps = 1e-9;
+    const int zeros = (w[0] < eps) + (w[1] < eps) + (w[2] < eps);
+    Point3 normal;
+    if (zeros == 0)
+    {
+      normal = this->FaceNormals[f];
+    }
+    else if (zeros == 1)
+    {
+      // On the edge opposite the vertex with weight ~0: edge k runs from
+      // vertex k to vertex k + 1, so it is opposite vertex k + 2.
+      const int opposite = w[0] < eps ? 0 : (w[1] < eps ? 1 : 2);
+      const int k = (opposite + 1) % 3;
+      const Index across = this->Adjacency.Neighbour[f][k];
+      normal =
+        this->FaceNormals[f] + (across >= 0 ? this->FaceNormals[across] : this->FaceNormals[f]);
+    }
+    else
+    {
+      const int vertex = w[0] >= eps ? 0 : (w[1] >= eps ? 1 : 2);
+      normal = this->VertexNormals[t[vertex]];
+    }
+    return Dot(p - q, normal) < 0.0;
+  }
+
+  double Distance(const Point3& p) const
+  {
+    return std::sqrt(this->TreePtr->squared_distance(ToKernel(p)));
+  }
+
+  /// True when the segment from a to b crosses or touches the surface.
+  bool Crosses(const Point3& a, const Point3& b) const
+  {
+    return this->TreePtr->do_intersect(K::Segment_3(ToKernel(a), ToKernel(b)));
+  }
+
+  Index NearestTriangle(const Point3& p) const
+  {
+    return static_cast<Index>(this->TreePtr->closest_point_and_primitive(ToKernel(p)).second.idx());
+  }
+
+private:
+  const TriangleMesh& Surface;
+  SurfaceMesh Mesh;
+  std::unique_ptr<Tree> TreePtr;
+  std::unique_ptr<SideOfMesh> Side;
+  TriangleAdjacency Adjacency;
+  std::vector<Point3> FaceNormals, VertexNormals;
+};
+
+double BoundingDiagonal(const TriangleMesh& surface)
+{
+  const auto [lo, hi] = BoundingBox(surface.Points);
+  return Norm(hi - lo);
+}
+}
+
+VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
+  const std::vector<Point3>& sites, const std::vector<Index>& siteTrianglesIn,
+  const std::vector<std::uint8_t>& concaveFeature, const VoronoiMedialAxisOptions& options)
+{
+  VoronoiMedialAxisResult result;
+  if (sites.size() < 4 || surface.Triangles.empty())
+  {
+    return result;
+  }
+  auto report = [&options](double f) { return !options.Progress || options.Progress(f); };
+  auto abort = []()
+  {
+    VoronoiMedialAxisResult empty;
+    empty.Aborted = true;
+    return empty;
+  };
+  SurfaceQueries queries(surface);
+
+  // 1. Delaunay triangulation of the sites (CGAL sorts the range spatially,
+  // with a locally seeded shuffle). Meanwhile the other thread builds the
+  // surface's AABB tree, needed for the inside and distance tests below.
+  tbb::task_group background;
+  background.run([&queries] { queries.Build(); });
+  std::vector<std::pair<KPoint, Index>> input;
+  input.reserve(sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i)
+  {
+    input.emplace_back(ToKernel(sites[i]), static_cast<Index>(i));
+  }
+  Delaunay delaunay(input.begin(), input.end());
+  std::vector<std::pair<KPoint, Index>>().swap(input);
+  background.wait();
+  if (!report(0.35))
+  {
+    return abort();
+  }
+
+  // 2. Circumcentres of the finite cells, and which of them lie inside.
+  // Cells are numbered by their sorted site ids, not by CGAL's storage
+  // order (which can depend on memory addresses): the output is then the
+  // same in every run.
+  std::vector<std::pair<std::array<Index, 4>, Delaunay::Cell_handle>> keyed;
+  keyed.reserve(delaunay.number_of_finite_cells());
+  for (auto c = delaunay.finite_cells_begin(); c != delaunay.finite_cells_end(); ++c)
+  {
+    std::array<Index, 4> key{ c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
+      c->vertex(3)->info() };
+    std::sort(key.begin(), key.end());
+    keyed.emplace_back(key, c);
+  }
+  // Keys are unique (one per cell): the parallel sort is deterministic.
+  tbb::parallel_sort(
+    keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Delaunay::Cell_handle> cells;
+  cells.reserve(keyed.size());
+  for (auto& [key, c] : keyed)
+  {
+    c->info() = static_cast<Index>(cells.size());
+    cells.push_back(c);
+  }
+  decltype(keyed)().swap(keyed);
+  for (auto c = delaunay.all_cells_begin(); c != delaunay.all_cells_end(); ++c)
+  {
+    if (delaunay.is_infinite(c))
+    {
+      c->info() = -1;
+    }
+  }
+  const std::size_t nc = cells.size();
+  result.DelaunayCells = nc;
+  // Flat copies of the cells' sites and neighbours (-1: infinite cell):
+  // every later pass walks these arrays instead of CGAL's handles.
+  std::vector<std::array<Index, 4>> cellSites(nc), cellNeighbours(nc);
+  std::vector<Point3> centre(nc);
+  std::vector<char> inside(nc, 0), ambiguous(nc, 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 4096),
+    [&](const tbb::blocked_range<std::size_t>& r)
+    {
+      for (std::size_t c = r.begin(); c != r.end(); ++c)
+      {
+        const auto& cell = cells[c];
+        for (int k = 0; k < 4; ++k)
+        {
+          cellSites[c][k] = cell->vertex(k)->info();
+          cellNeighbours[c][k] = cell->neighbor(k)->info();
+        }
+        centre[c] = Circumcentre(cell->vertex(0)->point(), cell->vertex(1)->point(),
+          cell->vertex(2)->point(), cell->vertex(3)->point());
+      }
+    });
+  std::vector<Delaunay::Cell_handle>().swap(cells);
+  // Each site's triangle (given, or the nearest) and its normal.
+  std::vector<Index> siteTriangle = siteTrianglesIn;
+  const Index nt = static_cast<Index>(surface.Triangles.size());
+  bool valid = siteTriangle.size() == sites.size();
+  for (std::size_t i = 0; valid && i < siteTriangle.size(); ++i)
+  {
+    valid = siteTriangle[i] >= 0 && siteTriangle[i] < nt;
+  }
+  if (!valid)
+  {
+    siteTriangle.resize(sites.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sites.size(), 1024),
+      [&](const tbb::blocked_range<std::size_t>& r)
+      {
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+        {
+          siteTriangle[i] = queries.NearestTriangle(sites[i]);
+        }
+      });
+  }
+  // Each site's normal, and whether it lies strictly inside its triangle.
+  std::vector<Point3> normal(sites.size());
+  std::vector<char> interiorSite(sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i)
+  {
+    const Triangle& t = surface.Triangles[siteTriangle[i]];
+    const Point3 &a = surface.Points[t[0]], &b = surface.Points[t[1]], &c = surface.Points[t[2]];
+    const Point3 n = Cross(b - a, c - a);
+    const double area2 = Dot(n, n);
+    const double w0 = Dot(Cross(c - b, sites[i] - b), n) / area2;
+    const double w1 = Dot(Cross(a - c, sites[i] - c), n) / area2;
+    const double w2 = Dot(Cross(b - a, sites[i] - a), n) / area2;
+    normal[i] = Normalized(n);
+    interiorSite[i] = std::min({ w0, w1, w2 }) > 1e-9 && area2 > 0.0 ? 1 : 0;
+  }
+  // A circumcentre clearly in front of the tangent planes of its four sites
+  // is outside, and a large ball clearly behind them is inside. Every other
+  // one is decided exactly, by the closest surface point and its
+  // pseudo-normal; that includes all small balls: in thin parts a small
+  // ball's centre can be behind all four tangent planes and still outside,
+  // past another part of the surface.
+  constexpr double clearCosine = 0.1;
+  const std::pair<Point3, Point3> box = BoundingBox(surface.Points);
+  const Point3 &lo = box.first, &hi = box.second; // no structured bindings: captured below
+  const double smallRadius =
+    4.0 * std::sqrt(2.0 * SurfaceArea(surface) / (std::sqrt(3.0) * sites.size()));
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 1024),
+    [&](const tbb::blocked_range<std::size_t>& r)
+    {
+      for (std::size_t c = r.begin(); c != r.end(); ++c)
+      {
+        const Point3& x = centre[c];
+        // Outside the surface's bounding box is outside. That also keeps the
+        // far circumcentres of slivers (up to overflow) away from the
+        // distance computations below, which would overflow on them.
+        if (!(x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1] && x[2] >= lo[2] &&
+              x[2] <= hi[2]))
+        {
+          continue;
+        }
+        int behind = 0, front = 0;
+        for (int k = 0; k < 4; ++k)
+        {
+          const Index s = cellSites[c][k];
+          const Point3 d = centre[c] - sites[s];
+          const double along = Dot(d, normal[s]), length = Norm(d);
+          behind += along < -clearCosine * length ? 1 : 0;
+          front += along > clearCosine * length ? 1 : 0;
+        }
+        if (front == 4)
+        {
+          continue;
+        }
+        const Index s0 = cellSites[c][0];
+        if (behind == 4 && Norm(centre[c] - sites[s0]) >= smallRadius)
+        {
+          inside[c] = 1;
+          continue;
+        }
+        // Walk from the site whose tangent plane is the least grazing
+        // towards the circumcentre: if the open segment meets no triangle,
+        // the circumcentre is on the same side as the site's own triangle
+        // says. (Sites on a triangle's boundary are left to the exact test.)
+        int best = 0;
+        double bestCosine = 0.0;
+        for (int k = 0; k < 4; ++k)
+        {
+          const Index s = cellSites[c][k];
+          const Point3 d = centre[c] - sites[s];
+          const double cosine = Dot(d, normal[s]) / Norm(d);
+          if (std::fabs(cosine) > std::fabs(bestCosine))
+          {
+            bestCosine = cosine;
+            best = k;
+          }
+        }
+        const Index s = cellSites[c][best];
+        if (std::fabs(bestCosine) > clearCosine && interiorSite[s] &&
+          !queries.Crosses(centre[c], sites[s] + 1e-6 * (centre[c] - sites[s])))
+        {
+          inside[c] = bestCosine < 0.0 ? 1 : 0;
+          continue;
+        }
+        ambiguous[c] = 1;
+        inside[c] = queries.InsideByPseudoNormal(centre[c], sites[s], siteTriangle[s]) ? 1 : 0;
+      }
+    });
+  for (char a : ambiguous)
+  {
+    result.AmbiguousInsideTests += a;
+  }
+  if (!report(0.7))
+  {
+    return abort();
+  }
+
+  // 3. Weld circumcentres of adjacent inside cells that coincide; remember
+  // the adjacent inside pairs, the future medial edges.
+  const double diagonal = BoundingDiagonal(surface);
+  const double weld2 = std::pow(options.RelativeWeldTolerance * diagonal, 2);
+  DisjointSets groups(nc);
+  std::vector<std::array<Index, 2>> adjacentInside;
+  adjacentInside.reserve(2 * nc);
+  for (std::size_t c = 0; c < nc; ++c)
+  {
+    if (!inside[c])
+    {
+      continue;
+    }
+    for (Index n : cellNeighbours[c])
+    {
+      if (n > static_cast<Index>(c) && inside[n])
+      {
+        adjacentInside.push_back({ static_cast<Index>(c), n });
+        if (Distance2(centre[c], centre[n]) <= weld2)
+        {
+          groups.Union(static_cast<Index>(c), n);
+        }
+      }
+    }
+  }
+  // Medial vertex ids in cell order; Atlas = union of the group's sites.
+  std::vector<Index> vertexOf(nc, -1);
+  std::vector<std::vector<Index>> atlas;
+  std::vector<Point3> centreSum;
+  std::vector<int> groupSize;
+  for (std::size_t c = 0; c < nc; ++c)
+  {
+    if (!inside[c])
+    {
+      continue;
+    }
+    ++result.InsideCells;
+    const Index root = groups.Find(static_cast<Index>(c));
+    if (vertexOf[root] < 0)
+    {
+      vertexOf[root] = static_cast<Index>(atlas.size());
+      atlas.emplace_back();
+      centreSum.push_back({ 0.0, 0.0, 0.0 });
+      groupSize.push_back(0);
+    }
+    const Index v = vertexOf[root];
+    vertexOf[c] = v;
+    centreSum[v] = centreSum[v] + centre[c];
+    ++groupSize[v];
+    atlas[v].insert(atlas[v].end(), cellSites[c].begin(), cellSites[c].end());
+  }
+  const std::size_t nv = atlas.size();
+  result.WeldedCells = result.InsideCells - nv;
+  MedialMesh& mesh = result.Mesh;
+  mesh.Centers.resize(nv);
+  mesh.Radii.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    std::sort(atlas[v].begin(), atlas[v].end());
+    atlas[v].erase(std::unique(atlas[v].begin(), atlas[v].end()), atlas[v].end());
+    mesh.Centers[v] = (1.0 / groupSize[v]) * centreSum[v];
+    double radius = 0.0;
+    for (Index s : atlas[v])
+    {
+      radius += Norm(mesh.Centers[v] - sites[s]);
+    }
+    mesh.Radii[v] = radius / static_cast<double>(atlas[v].size());
+    result.AtlasSites.insert(result.AtlasSites.end(), atlas[v].begin(), atlas[v].end());
+    result.AtlasOffsets.push_back(static_cast<Index>(result.AtlasSites.size()));
+  }
+  std::vector<std::vector<Index>>().swap(atlas);
+
+  // 4. Edges: Voronoi edges (duals of Delaunay facets) between inside cells.
+  for (const auto& [a, b] : adjacentInside)
+  {
+    if (vertexOf[a] != vertexOf[b])
+    {
+      mesh.Edges.push_back(
+        { std::min(vertexOf[a], vertexOf[b]), std::max(vertexOf[a], vertexOf[b]) });
+    }
+  }
+  decltype(adjacentInside)().swap(adjacentInside);
+  tbb::parallel_sort(mesh.Edges.begin(), mesh.Edges.end());
+  mesh.Edges.erase(std::unique(mesh.Edges.begin(), mesh.Edges.end()), mesh.Edges.end());
+  if (!report(0.8))
+  {
+    return abort();
+  }
+
+  // 5. Faces: the Voronoi face dual to each Delaunay edge whose cells are all
+  // finite and inside, fan-triangulated.
+  const bool filtering = options.ConcaveFiltering && concaveFeature.size() == sites.size();
+  // Collect the complete faces first, keyed by their site pair, so that the
+  // output order does not depend on CGAL's edge order.
+  struct Face
+  {
+    std::array<Index, 2> Sites;
+    std::size_t First, Size; // in `polygons`
+  };
+  std::vector<Face> complete;
+  std::vector<Index> polygons, polygon;
+  // Each Delaunay edge is circulated once over the flat cell arrays: the
+  // cells around it are marked (6 local edges per cell) as they are visited.
+  static constexpr int edgeEnds[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 },
+    { 2, 3 } };
+  auto localIndex = [&cellSites](Index c, Index site)
+  {
+    const auto& s = cellSites[c];
+    return s[0] == site ? 0 : (s[1] == site ? 1 : (s[2] == site ? 2 : 3));
+  };
+  auto localEdge = [](int i, int j)
+  {
+    if (i > j)
+    {
+      std::swap(i, j);
+    }
+    return i == 0 ? j - 1 : (i == 1 ? j + 1 : 5);
+  };
+  std::vector<std::uint8_t> edgeDone(nc, 0);
+  for (std::size_t start = 0; start < nc; ++start)
+  {
+    if (!inside[start])
+    {
+      continue;
+    }
+    for (int e = 0; e < 6; ++e)
+    {
+      if (edgeDone[start] & (1u << e))
+      {
+        continue;
+      }
+      const Index u = cellSites[start][edgeEnds[e][0]], v = cellSites[start][edgeEnds[e][1]];
+      int other[2], n = 0;
+      for (int k = 0; k < 4; ++k)
+      {
+        if (k != edgeEnds[e][0] && k != edgeEnds[e][1])
+        {
+          other[n++] = k;
+        }
+      }
+      Index current = static_cast<Index>(start);
+      Index exitSite = cellSites[start][other[0]];
+      bool allInside = true;
+      polygon.clear();
+      for (;;)
+      {
+        edgeDone[current] |= static_cast<std::uint8_t>(
+          1u << localEdge(localIndex(current, u), localIndex(current, v)));
+        const Index vertex = vertexOf[current];
+        if (polygon.empty() || polygon.back() != vertex)
+        {
+          polygon.push_back(vertex);
+        }
+        const int exitLocal = localIndex(current, exitSite);
+        const int iu = localIndex(current, u), iv = localIndex(current, v);
+        const int keep = 6 - exitLocal - iu - iv; // the fourth local index
+        const Index next = cellNeighbours[current][exitLocal];
+        if (next < 0 || !inside[next])
+        {
+          allInside = false;
+          break;
+        }
+        exitSite = cellSites[current][keep];
+        current = next;
+        if (current == static_cast<Index>(start))
+        {
+          break;
+        }
+      }
+      if (!allInside)
+      {
+        continue;
+      }
+      while (polygon.size() > 1 && polygon.back() == polygon.front())
+      {
+        polygon.pop_back();
+      }
+      if (polygon.size() < 3)
+      {
+        continue; // collapsed by welding
+      }
+      // Canonical cycle: start at the smallest id, towards its smaller neighbour.
+      std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end()), polygon.end());
+      if (polygon.back() < polygon[1])
+      {
+        std::reverse(polygon.begin() + 1, polygon.end());
+      }
+      complete.push_back({ { std::min(u, v), std::max(u, v) }, polygons.size(), polygon.size() });
+      polygons.insert(polygons.end(), polygon.begin(), polygon.end());
+    }
+  }
+  // One face per Delaunay edge: unique keys, a deterministic parallel sort.
+  tbb::parallel_sort(complete.begin(), complete.end(),
+    [](const Face& a, const Face& b) { return a.Sites < b.Sites; });
+
+  std::vector<char> filtered; // per triangle: its face fails the concave test
+  for (const Face& face : complete)
+  {
+    const Index s1 = face.Sites[0], s2 = face.Sites[1];
+    bool spurious = false;
+    if (filtering && concaveFeature[s1] && concaveFeature[s2])
+    {
+      const Point3 middle = 0.5 * (sites[s1] + sites[s2]);
+      spurious =
+        queries.Distance(middle) < options.ConcaveFilterAlpha * 0.5 * Norm(sites[s1] - sites[s2]);
+    }
+    const Index* p = polygons.data() + face.First;
+    for (std::size_t k = 1; k + 1 < face.Size; ++k)
+    {
+      const std::array<Index, 3> tri{ p[0], p[k], p[k + 1] };
+      if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
+      {
+        continue; // a welded vertex met twice in the cycle
+      }
+      mesh.Faces.push_back(tri);
+      result.FaceSitePair.push_back(face.Sites);
+      filtered.push_back(spurious ? 1 : 0);
+    }
+  }
+  std::vector<Face>().swap(complete);
+  std::vector<Index>().swap(polygons);
+  // Welding can make two faces share a triangle: keep the first.
+  {
+    std::vector<std::pair<std::array<Index, 3>, std::size_t>> sorted(mesh.Faces.size());
+    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
+    {
+      std::array<Index, 3> key = mesh.Faces[f];
+      std::sort(key.begin(), key.end());
+      sorted[f] = { key, f };
+    }
+    tbb::parallel_sort(sorted.begin(), sorted.end());
+    std::vector<char> keep(mesh.Faces.size(), 1);
+    for (std::size_t i = 1; i < sorted.size(); ++i)
+    {
+      if (sorted[i].first == sorted[i - 1].first)
+      {
+        keep[sorted[i].second] = 0;
+      }
+    }
+    std::size_t out = 0;
+    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
+    {
+      if (keep[f])
+      {
+        mesh.Faces[out] = mesh.Faces[f];
+        result.FaceSitePair[out] = result.FaceSitePair[f];
+        filtered[out] = filtered[f];
+        ++out;
+      }
+    }
+    mesh.Faces.resize(out);
+    result.FaceSitePair.resize(out);
+    filtered.resize(out);
+  }
+
+  // 6. Concave filtering by collapses only (no holes), then pockets: tiny
+  // pieces cut off from the rest, spurious in a connected solid.
+  result.FilteredFaces = CollapseFlaggedTriangles(result, filtered);
+  result.DroppedPockets =
+    DropSmallComponents(result, std::max<std::size_t>(2, result.Mesh.Centers.size() / 1000));
+  report(1.0);
+  return result;
+}
+}

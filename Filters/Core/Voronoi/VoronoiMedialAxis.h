@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The initial medial mesh: the part of the sites' 3D Voronoi diagram that
+// lies inside the surface (Delaunay triangulation by CGAL; Voronoi vertices
+// are circumcentres).
+#ifndef medialaxis_VoronoiMedialAxis_h
+#define medialaxis_VoronoiMedialAxis_h
+
+#include "Mesh/MedialMesh.h"
+#include "Mesh/PolygonMesh.h"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace medialaxis
+{
+struct VoronoiMedialAxisOptions
+{
+  /// Circumcentres of adjacent Delaunay cells closer than this fraction of the
+  /// surface's bounding-box diagonal become one medial vertex (co-spherical
+  /// sites).
+  double RelativeWeldTolerance = 1e-9;
+  /// Paper Eq. 4: drop a face whose two sites both lie on concave-feature
+  /// cells when the distance from their midpoint to the surface is below
+  /// alpha * |s1 - s2| / 2.
+  bool ConcaveFiltering = true;
+  double ConcaveFilterAlpha = 0.7;
+  /// Fraction in [0, 1]; returning false aborts (the result is then empty).
+  std::function<bool(double)> Progress;
+};
+
+struct VoronoiMedialAxisResult
+{
+  /// Vertices (circumcentres inside the surface) with radii, all inner
+  /// Voronoi edges, and the fan-triangulated inner Voronoi faces.
+  MedialMesh Mesh;
+  /// Sites of each vertex: AtlasSites[AtlasOffsets[v] .. AtlasOffsets[v + 1]),
+  /// sorted; 4 for a generic vertex, more where co-spherical sites were welded.
+  std::vector<Index> AtlasOffsets{ 0 };
+  std::vector<Index> AtlasSites;
+  /// Per triangle: the two sites whose Delaunay edge its Voronoi face is dual to.
+  std::vector<std::array<Index, 2>> FaceSitePair;
+
+  // What happened, for reports and tests.
+  std::size_t DelaunayCells = 0;
+  std::size_t InsideCells = 0;
+  std::size_t AmbiguousInsideTests = 0; // needed the closest-point test (see the .cxx)
+  std::size_t WeldedCells = 0;          // cells merged into another's vertex
+  std::size_t FilteredFaces = 0;        // triangles removed by Eq. 4 (by collapses)
+  std::size_t DroppedPockets = 0;       // tiny disconnected pieces removed
+  bool Aborted = false;
+};
+
+/// `siteTriangles`: the surface triangle each site lies on (may be empty:
+/// the nearest triangle is then found). `concaveFeature`: per site, 1 if its
+/// restricted cell crosses a concave sharp edge (may be empty: no concave
+/// filtering).
+VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
+  const std::vector<Point3>& sites, const std::vector<Index>& siteTriangles,
+  const std::vector<std::uint8_t>& concaveFeature,
+  const VoronoiMedialAxisOptions& options = VoronoiMedialAxisOptions());
+}
+
+#endif

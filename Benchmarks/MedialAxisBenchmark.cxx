@@ -3,7 +3,7 @@
 //
 //   medialaxis-benchmark [--samples N] [--target V] [--cad] [--threads T] [--scaling]
 //                        [--counts N1,N2,...] [--envelope] [--error-samples S]
-//                        [--envelope-samples E]
+//                        [--envelope-samples E] [--delaunay]
 //                        [--shape torus|box|...] [--resolution R] mesh...
 //
 // Memory: the process's resident peak during each stage, and in brackets
@@ -19,8 +19,11 @@
 // vtkSlabReconstructor, poly data included) and "error" (reconstruction
 // error with S surface samples, default 100,000, and E envelope samples,
 // default the library's, 50,000).
+// --delaunay also times CGAL's Delaunay triangulation of the same samples
+// alone (outside the stages: the least a Voronoi-based MAT pays).
 // The heap is tuned (HeapTuning.h) unless MEDIALAXIS_TUNE_HEAP=0; the
 // first line printed says how.
+#include "DelaunayBaseline.h"
 #include "Envelope/EnvelopeDistance.h"
 #include "Envelope/EnvelopeMesher.h"
 #include "Envelope/ReconstructionError.h"
@@ -149,6 +152,7 @@ bool LoadSurface(
 
 std::size_t TopologyGuard = AtlasSimplifierOptions().TopologyGuardVertexCount;
 bool Envelope = false;
+bool DelaunayBaseline = false;
 std::size_t ErrorSamples = 100000;
 std::size_t EnvelopeSamples = ReconstructionErrorOptions().NumberOfEnvelopeSamples;
 
@@ -202,6 +206,13 @@ std::vector<Stage> RunPipeline(
   SamplingOptions sampling;
   sampling.NumberOfSamples = samples;
   stages.push_back(Measure("sampling", [&] { sites = SampleSurface(mesh, sampling); }));
+  if (DelaunayBaseline)
+  {
+    std::size_t cells = 0;
+    const Stage delaunay = Measure("delaunay", [&] { cells = DelaunayCellCount(sites.Points); });
+    std::printf("  Delaunay of the same samples alone: %zu cells, %.3f s, %.0f MB (+%.0f)\n", cells,
+      delaunay.Seconds, delaunay.PeakMB, delaunay.ExtraMB);
+  }
   RestrictedVoronoiDiagram rvd;
   stages.push_back(Measure("rvd", [&] { rvd = ComputeRestrictedVoronoi(mesh, sites.Points); }));
   VoronoiMedialAxisResult voronoi;
@@ -294,6 +305,8 @@ int main(int argc, char* argv[])
       scaling = true;
     else if (arg == "--envelope")
       Envelope = true;
+    else if (arg == "--delaunay")
+      DelaunayBaseline = true;
     else if (arg == "--error-samples" && i + 1 < argc)
       ErrorSamples = std::stoul(argv[++i]);
     else if (arg == "--envelope-samples" && i + 1 < argc)
@@ -317,7 +330,7 @@ int main(int argc, char* argv[])
       std::cout << "usage: " << argv[0]
                 << " [--samples N] [--target V] [--cad] [--threads T] [--scaling]"
                    " [--counts N1,N2,...] [--envelope] [--error-samples S]"
-                   " [--envelope-samples E]"
+                   " [--envelope-samples E] [--delaunay]"
                    " [--shape torus|sphere|box] [--resolution R] mesh...\n";
       return 0;
     }

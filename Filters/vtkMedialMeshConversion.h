@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Conversion between the plain medial mesh and its vtkPolyData form
-// (DESIGN.md data contract), and the one validation every medial-mesh
+// (the data contract of docs/architecture.md), and the one validation every medial-mesh
 // consumer calls. Private to the module: not wrapped.
 #ifndef vtkMedialMeshConversion_h
 #define vtkMedialMeshConversion_h

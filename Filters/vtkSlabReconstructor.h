@@ -4,7 +4,7 @@
  * @brief   The envelope of a medial mesh as a triangle surface.
  *
  * Input: a medial mesh (points with point data `Radius`; triangles, lines,
- * vertices; see DESIGN.md). The envelope is the union of the primitives:
+ * vertices; see docs/architecture.md). The envelope is the union of the primitives:
  * a ball at every vertex, on every edge (face edges included) the medial cone
  * (the convex hull of its two balls, bounded by the cone tangent to both), and
  * on every triangle the medial slab (the convex hull of its three balls,

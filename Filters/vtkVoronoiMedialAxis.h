@@ -28,7 +28,7 @@
  * the Atlas of every vertex (its generating sites) as field data
  * `AtlasSites` / `AtlasOffsets` and point data `AtlasCount`; and field data
  * with counts (`DelaunayCells`, `InsideCells`, `AmbiguousInsideTests`,
- * `WeldedCells`, `FilteredFaces`).
+ * `WeldedCells`, `FilteredTriangles`, `DroppedPockets`).
  */
 #ifndef vtkVoronoiMedialAxis_h
 #define vtkVoronoiMedialAxis_h

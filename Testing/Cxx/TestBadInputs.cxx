@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 11's bad inputs through the C++ API: each is either computed by
+// The bad inputs of docs/robustness.md through the C++ API: each is either computed by
 // vtkStructuralMedialAxis (the result checked) or refused with an error
 // event naming the defect. The same inputs as Testing/Python/bad_inputs.py,
 // built here in code; docs/robustness.md documents the behaviour.

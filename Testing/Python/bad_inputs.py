@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Issue 11's bad inputs, generated: one corpus shared by the Python API test
+"""The bad inputs of docs/robustness.md, generated: one corpus shared by the Python API test
 (test_bad_inputs.py) and the command-line test (test_cli.py).
 
 Every case is either refused, with a phrase the error message must contain

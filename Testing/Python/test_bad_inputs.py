@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Issue 11's bad inputs through the Python API: each is either computed by
+"""The bad inputs of docs/robustness.md through the Python API: each is either computed by
 vtkStructuralMedialAxis (the result checked) or refused with an error event
 and a message naming the defect. The corpus is bad_inputs.py, shared with
 the command-line test."""

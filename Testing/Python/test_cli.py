@@ -113,7 +113,7 @@ class CommandLineTest(unittest.TestCase):
         self.assertIn("no such file", result.stderr)
 
     def test_bad_inputs_give_a_result_or_a_clear_error(self):
-        """Issue 11's bad inputs (the corpus in bad_inputs.py, shared with the
+        """The bad inputs of docs/robustness.md (the corpus in bad_inputs.py, shared with the
         Python API test) through the tool: each is either computed (exit 0,
         the medial mesh checked) or refused (exit 3) with a message naming
         the defect."""

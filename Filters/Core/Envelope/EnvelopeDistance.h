@@ -10,8 +10,7 @@
 // is exactly the boundary of U, and F is 1-Lipschitz.
 //
 // DistanceToBoundary gives the distance from any point to the boundary of U.
-// For a point inside U it works as follows (the method of the issue's
-// "inside the union" requirement):
+// For a point inside U it bounds that distance from both sides:
 //  1. lower = -F(p), from the deepest primitive j; its closest boundary point
 //     x = p + lower * n_j lies on the boundary of U unless it is strictly
 //     inside another primitive. If it is not, x certifies upper = lower: the

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Plain C++ medial mesh (no VTK): sphere centres with radii, medial edges
 // ("cones") and medial triangles ("slabs"). The VTK representation of the same
-// data is described in DESIGN.md; conversion lives in MedialMeshConversion.
+// data is described in docs/architecture.md; conversion lives in
+// vtkMedialMeshConversion.
 #ifndef medialaxis_MedialMesh_h
 #define medialaxis_MedialMesh_h
 

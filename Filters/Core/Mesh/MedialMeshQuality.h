@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Triangle quality and fold-over counts of a medial mesh, measured the way
-// the medial-axis papers report them (DESIGN.md, "Quality").
+// the medial-axis papers report them.
 #ifndef medialaxis_MedialMeshQuality_h
 #define medialaxis_MedialMeshQuality_h
 

@@ -5,8 +5,8 @@
 #ifndef medialaxis_ExposedPieces_h
 #define medialaxis_ExposedPieces_h
 
-#include "Envelope/AreaSampling.h"
 #include "Envelope/EnvelopeDistance.h"
+#include "Geometry/AreaSampling.h"
 #include "Geometry/Vec3.h"
 #include "Support/Random.h"
 

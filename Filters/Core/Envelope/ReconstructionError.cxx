@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Envelope/ReconstructionError.h"
 
-#include "Envelope/AreaSampling.h"
 #include "Envelope/EnvelopeMaximum.h"
 #include "Envelope/ExposedPieces.h"
+#include "Geometry/AreaSampling.h"
 
 #include "Geometry/KdTree.h"
 #include "Geometry/MortonOrder.h"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Sampling/BlueNoiseSampler.h"
 
+#include "Geometry/AreaSampling.h"
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/KdTree.h"
 #include "Geometry/MortonOrder.h"
@@ -49,9 +50,9 @@ void RandomCandidates(const TriangleMesh& surface, std::size_t count, std::uint6
       --t; // never land on a zero-area triangle
     }
     const Triangle& tri = surface.Triangles[t];
-    const double r1 = std::sqrt(random.Uniform()), r2 = random.Uniform();
-    points[i] = (1.0 - r1) * surface.Points[tri[0]] + (r1 * (1.0 - r2)) * surface.Points[tri[1]] +
-      (r1 * r2) * surface.Points[tri[2]];
+    const double r1 = random.Uniform(), r2 = random.Uniform(); // drawn in this order
+    points[i] = PointInTriangle(
+      surface.Points[tri[0]], surface.Points[tri[1]], surface.Points[tri[2]], r1, r2);
     triangles[i] = static_cast<Index>(t);
   }
 }

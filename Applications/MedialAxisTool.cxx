@@ -65,6 +65,9 @@ Options:
                         spheres, sharp features preserved; organic (default)
                         = 10,000 samples, 1,000 spheres
   --samples N           surface samples (overrides the preset)
+  --adaptive, --uniform sample thin parts (tentacles, ears, thin plates)
+                        densely, by the local thickness, or the whole surface
+                        uniformly (default: uniform)
   --target N            spheres left after simplification (overrides the preset)
   --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not
   --feature-angle DEG   dihedral tolerance for sharp edges (default 45)
@@ -131,6 +134,7 @@ struct Options
   std::string Input, OutputDir, Report, Screenshot;
   vtkIdType Samples = -1, Target = -1;
   int Sharp = -1; // -1: from the preset
+  bool Adaptive = false;
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
        Fillets = false, SpikeCollapses = false, QMat = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
@@ -262,6 +266,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
         return "--report needs a file name";
       }
       o.Report = argv[++i];
+    }
+    else if (arg == "--adaptive" || arg == "--uniform")
+    {
+      o.Adaptive = arg == "--adaptive";
     }
     else if (arg == "--sharp" || arg == "--no-sharp")
     {
@@ -518,6 +526,7 @@ int main(int argc, char** argv)
   structural->SetStrategy(
     o.QMat ? vtkStructuralMedialAxis::QMat : vtkStructuralMedialAxis::Structural);
   structural->SetRandomSeed(o.Seed);
+  structural->SetAdaptiveSampling(o.Adaptive);
   structural->SetNumberOfThreads(o.Threads);
   structural->SetGenerateEnvelope(o.Envelope);
   structural->SetInputConnection(validator->GetOutputPort());
@@ -665,6 +674,7 @@ int main(int argc, char** argv)
     json.precision(10);
     json << "{\n  \"input\": " << JsonString(o.Input) << ",\n  \"parameters\": {"
          << "\"samples\": " << structural->GetNumberOfSamples()
+         << ", \"adaptive_sampling\": " << (structural->GetAdaptiveSampling() ? "true" : "false")
          << ", \"target\": " << structural->GetTargetNumberOfVertices()
          << ", \"preserve_sharp_features\": "
          << (structural->GetPreserveSharpFeatures() ? "true" : "false")

@@ -38,6 +38,11 @@ medialaxis::AreaVolume Exact(vtkAnalyticShapeSource* s)
         { s->GetXLength(), s->GetYLength(), s->GetZLength() }, s->GetFilletRadius());
     case vtkAnalyticShapeSource::L_BLOCK:
       return medialaxis::LBlockAreaVolume({ s->GetXLength(), s->GetYLength(), s->GetZLength() });
+    case vtkAnalyticShapeSource::DUMBBELL:
+      return medialaxis::DumbbellAreaVolume(s->GetLength(), s->GetRadius(), s->GetMinorRadius());
+    case vtkAnalyticShapeSource::PLATE_WITH_BOSS:
+      return medialaxis::PlateWithBossAreaVolume(
+        s->GetXLength(), s->GetZLength(), s->GetRadius(), s->GetLength());
     default:
       return medialaxis::CylinderAreaVolume(s->GetRadius(), s->GetLength());
   }
@@ -83,6 +88,14 @@ int vtkAnalyticShapeSource::RequestData(
       case L_BLOCK:
         mesh =
           medialaxis::MakeLBlock({ this->XLength, this->YLength, this->ZLength }, this->Resolution);
+        break;
+      case DUMBBELL:
+        mesh =
+          medialaxis::MakeDumbbell(this->Length, this->Radius, this->MinorRadius, this->Resolution);
+        break;
+      case PLATE_WITH_BOSS:
+        mesh = medialaxis::MakePlateWithBoss(
+          this->XLength, this->ZLength, this->Radius, this->Length, this->Resolution);
         break;
       default:
         mesh = medialaxis::MakeCylinder(this->Radius, this->Length, this->Resolution);

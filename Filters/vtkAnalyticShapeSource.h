@@ -20,6 +20,15 @@
  * - LBlock (XLength, YLength, ZLength): the box minus its quadrant x > 0,
  *   y > 0, so that the vertical edge on the z axis is a sharp concave edge;
  *   Resolution grid cells per half side.
+ * - Dumbbell (Length = pole to pole, along z; Radius = the balls' radius;
+ *   MinorRadius = the neck's radius): two balls joined by a thin cylinder;
+ *   medial axis = the axis segment through the neck and the balls' centres
+ *   (a thin part that uniform sampling misses: see
+ *   vtkBlueNoiseSurfaceSampler::Adaptive).
+ * - PlateWithBoss (XLength = side of the square plate, ZLength = its
+ *   thickness, Radius and Length = radius and height of the cylindrical
+ *   boss on its top face, all edges sharp): medial axis = the plate's
+ *   mid-plane sheet, without holes, joined to the boss's.
  *
  * Resolution is the number of segments along a quarter circle (for the sharp
  * box, along its longest side). GetExactArea() / GetExactVolume() give the
@@ -46,12 +55,14 @@ public:
     BOX = 3,
     ROUNDED_BOX = 4,
     CYLINDER = 5,
-    L_BLOCK = 6
+    L_BLOCK = 6,
+    DUMBBELL = 7,
+    PLATE_WITH_BOSS = 8
   };
 
   ///@{
   /// Which shape to generate (default SPHERE).
-  vtkSetClampMacro(Shape, int, SPHERE, L_BLOCK);
+  vtkSetClampMacro(Shape, int, SPHERE, PLATE_WITH_BOSS);
   vtkGetMacro(Shape, int);
   void SetShapeToSphere() { this->SetShape(SPHERE); }
   void SetShapeToCapsule() { this->SetShape(CAPSULE); }
@@ -60,22 +71,27 @@ public:
   void SetShapeToRoundedBox() { this->SetShape(ROUNDED_BOX); }
   void SetShapeToCylinder() { this->SetShape(CYLINDER); }
   void SetShapeToLBlock() { this->SetShape(L_BLOCK); }
+  void SetShapeToDumbbell() { this->SetShape(DUMBBELL); }
+  void SetShapeToPlateWithBoss() { this->SetShape(PLATE_WITH_BOSS); }
   ///@}
 
   ///@{
-  /// Radius of the sphere, capsule and cylinder (default 1).
+  /// Radius of the sphere, capsule, cylinder, the dumbbell's balls and the
+  /// plate's boss (default 1).
   vtkSetClampMacro(Radius, double, 1e-12, VTK_DOUBLE_MAX);
   vtkGetMacro(Radius, double);
   ///@}
 
   ///@{
-  /// Axis length of the capsule, height of the cylinder (default 2).
+  /// Axis length of the capsule, height of the cylinder and of the plate's
+  /// boss, pole-to-pole length of the dumbbell (default 2).
   vtkSetClampMacro(Length, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Length, double);
   ///@}
 
   ///@{
-  /// Torus centre-circle radius (default 2) and tube radius (default 0.5).
+  /// Torus centre-circle radius (default 2) and tube radius (default 0.5);
+  /// MinorRadius is also the dumbbell's neck radius.
   vtkSetClampMacro(MajorRadius, double, 1e-12, VTK_DOUBLE_MAX);
   vtkGetMacro(MajorRadius, double);
   vtkSetClampMacro(MinorRadius, double, 1e-12, VTK_DOUBLE_MAX);
@@ -83,7 +99,8 @@ public:
   ///@}
 
   ///@{
-  /// Full side lengths of the box, rounded box and L-block (default 2 x 2 x 2).
+  /// Full side lengths of the box, rounded box and L-block (default 2 x 2 x
+  /// 2); XLength and ZLength are also the plate's side and thickness.
   vtkSetClampMacro(XLength, double, 1e-12, VTK_DOUBLE_MAX);
   vtkGetMacro(XLength, double);
   vtkSetClampMacro(YLength, double, 1e-12, VTK_DOUBLE_MAX);

@@ -16,6 +16,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <cmath>
+
 vtkStandardNewMacro(vtkBlueNoiseSurfaceSampler);
 
 int vtkBlueNoiseSurfaceSampler::RequestData(
@@ -38,6 +40,9 @@ int vtkBlueNoiseSurfaceSampler::RequestData(
   options.Seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->RandomSeed));
   options.RelaxationIterations = this->RelaxationIterations;
   options.CandidateRatio = this->CandidateRatio;
+  options.Adaptive = this->Adaptive;
+  options.Sizing.SpacingPerThickness = this->ThinPartSpacing;
+  options.Sizing.FinestSpacingRatio = this->FinestSpacingRatio;
   options.Progress = [this](double f)
   {
     this->UpdateProgress(0.05 + 0.9 * f);
@@ -80,6 +85,22 @@ int vtkBlueNoiseSurfaceSampler::RequestData(
   output->SetVerts(verts);
   output->GetPointData()->SetNormals(normals);
   output->GetPointData()->AddArray(triangleIds);
+  if (!samples.LocalThickness.empty())
+  {
+    vtkNew<vtkDoubleArray> thickness, spacing;
+    thickness->SetName("LocalThickness");
+    thickness->SetNumberOfTuples(n);
+    spacing->SetName("Spacing");
+    spacing->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double t = samples.LocalThickness[i];
+      thickness->SetValue(i, std::isfinite(t) ? t : -1.0);
+      spacing->SetValue(i, samples.Spacing[i]);
+    }
+    output->GetPointData()->AddArray(thickness);
+    output->GetPointData()->AddArray(spacing);
+  }
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -91,5 +112,8 @@ void vtkBlueNoiseSurfaceSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "RelaxationIterations: " << this->RelaxationIterations << "\n";
   os << indent << "CandidateRatio: " << this->CandidateRatio << "\n";
+  os << indent << "Adaptive: " << this->Adaptive << "\n";
+  os << indent << "ThinPartSpacing: " << this->ThinPartSpacing << "\n";
+  os << indent << "FinestSpacingRatio: " << this->FinestSpacingRatio << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

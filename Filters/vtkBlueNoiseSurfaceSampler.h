@@ -10,10 +10,22 @@
  * NumberOfSamples by repeatedly removing the most crowded one. Optional
  * restricted centroidal Voronoi (Lloyd) steps then even the spacing further.
  *
+ * With Adaptive on, the density follows the local thickness of the solid:
+ * thin parts (tentacles, ears, thin plates), which uniform samples miss,
+ * get a spacing of ThinPartSpacing times their thickness, up to
+ * 1 / FinestSpacingRatio^2 times the density elsewhere; the rest is uniform,
+ * a little sparser, so that exactly NumberOfSamples come out. The thickness
+ * is measured by rays cast inwards from random probe points (the shape
+ * diameter function); a shape without thin parts is sampled exactly as
+ * with Adaptive off.
+ *
  * Output ("sites"): points with one vertex cell each, point data `Normals`
  * (unit normal of the triangle the site lies on) and `TriangleId` (that
  * triangle, numbered as in the prepared surface, which equals the input's
- * numbering for a clean triangle mesh).
+ * numbering for a clean triangle mesh). With Adaptive on, also
+ * `LocalThickness` (the solid's thickness behind the site, of the nearest
+ * probe; -1 where no ray found the far side) and `Spacing` (the spacing the
+ * sizing field asked for there).
  *
  * The result is identical for identical input, parameters and RandomSeed,
  * whatever NumberOfThreads.
@@ -59,6 +71,27 @@ public:
   ///@}
 
   ///@{
+  /// Sample thin parts densely, by the local thickness (default off).
+  vtkSetMacro(Adaptive, bool);
+  vtkGetMacro(Adaptive, bool);
+  vtkBooleanMacro(Adaptive, bool);
+  ///@}
+
+  ///@{
+  /// With Adaptive: the spacing wanted on thin parts, as a fraction of
+  /// their thickness (default 0.5).
+  vtkSetClampMacro(ThinPartSpacing, double, 0.05, 10.0);
+  vtkGetMacro(ThinPartSpacing, double);
+  ///@}
+
+  ///@{
+  /// With Adaptive: the finest spacing, as a fraction of the spacing on the
+  /// thick parts (default 0.25, i.e. at most 16 times their density).
+  vtkSetClampMacro(FinestSpacingRatio, double, 0.01, 1.0);
+  vtkGetMacro(FinestSpacingRatio, double);
+  ///@}
+
+  ///@{
   /// Threads to use (0 = all cores, default). Does not change the result.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
@@ -74,6 +107,9 @@ protected:
   int RandomSeed = 0;
   int RelaxationIterations = 0;
   double CandidateRatio = 4.0;
+  bool Adaptive = false;
+  double ThinPartSpacing = 0.5;
+  double FinestSpacingRatio = 0.25;
   int NumberOfThreads = 0;
 
 private:

@@ -261,6 +261,7 @@ int vtkStructuralMedialAxis::RequestData(
   sampler->SetInputData(surface);
   sampler->SetNumberOfSamples(this->NumberOfSamples);
   sampler->SetRandomSeed(this->RandomSeed);
+  sampler->SetAdaptive(this->AdaptiveSampling);
   sampler->SetNumberOfThreads(this->NumberOfThreads);
   vtkNew<vtkRestrictedVoronoiDiagram> rvd;
   rvd->SetInputData(0, surface);
@@ -396,6 +397,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "AdaptiveSampling: " << this->AdaptiveSampling << "\n";
   os << indent << "TargetNumberOfVertices: " << this->TargetNumberOfVertices << "\n";
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";

@@ -60,6 +60,15 @@ public:
   ///@}
 
   ///@{
+  /// Sample thin parts densely, by the local thickness of the solid (see
+  /// vtkBlueNoiseSurfaceSampler::Adaptive), so that tentacles, ears and
+  /// thin plates are in the medial axis (default off).
+  vtkSetMacro(AdaptiveSampling, bool);
+  vtkGetMacro(AdaptiveSampling, bool);
+  vtkBooleanMacro(AdaptiveSampling, bool);
+  ///@}
+
+  ///@{
   /// Seed of the sampler: same seed, same result (default 0).
   vtkSetMacro(RandomSeed, int);
   vtkGetMacro(RandomSeed, int);
@@ -186,6 +195,7 @@ protected:
 
   vtkIdType NumberOfSamples = 10000;
   int RandomSeed = 0;
+  bool AdaptiveSampling = false;
   vtkIdType TargetNumberOfVertices = 1000;
   bool PreserveSharpFeatures = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;

@@ -104,6 +104,36 @@ const ShapeCase Cases[] = {
       }
       return std::fabs(d);
     } },
+  { "Dumbbell", vtkAnalyticShapeSource::DUMBBELL,
+    [](vtkAnalyticShapeSource* s)
+    {
+      s->SetLength(1.0);
+      s->SetRadius(0.2);
+      s->SetMinorRadius(0.02);
+    },
+    [](const double* p)
+    {
+      const double radial = std::sqrt(p[0] * p[0] + p[1] * p[1]);
+      const double top = std::hypot(radial, p[2] - 0.3), bottom = std::hypot(radial, p[2] + 0.3);
+      return std::min({ std::fabs(top - 0.2), std::fabs(bottom - 0.2),
+        std::fabs(p[2]) < 0.3 ? std::fabs(radial - 0.02) : 1e9 });
+    } },
+  { "PlateWithBoss", vtkAnalyticShapeSource::PLATE_WITH_BOSS,
+    [](vtkAnalyticShapeSource* s)
+    {
+      s->SetXLength(1.0);
+      s->SetZLength(0.01);
+      s->SetRadius(0.15);
+      s->SetLength(0.2);
+    },
+    [](const double* p)
+    {
+      const double radial = std::sqrt(p[0] * p[0] + p[1] * p[1]);
+      const double rim = std::max(std::fabs(p[0]), std::fabs(p[1]));
+      return std::min({ std::fabs(std::fabs(p[2]) - 0.005), std::fabs(rim - 0.5),
+        p[2] > 0.005 ? std::fabs(radial - 0.15) : 1e9,
+        radial <= 0.15 + 1e-12 ? std::fabs(p[2] - 0.205) : 1e9 });
+    } },
 };
 
 class AnalyticShape : public ::testing::TestWithParam<ShapeCase>
@@ -174,4 +204,7 @@ TEST(AnalyticShapes, InvalidParametersAreReported)
   EXPECT_THROW(MakeTorus(1.0, 2.0, 8), std::invalid_argument);
   EXPECT_THROW(MakeRoundedBox({ 1, 1, 1 }, 0.8, 8), std::invalid_argument);
   EXPECT_THROW(MakeSphere(-1.0, 8), std::invalid_argument);
+  EXPECT_THROW(MakeDumbbell(1.0, 0.3, 0.02, 8), std::invalid_argument); // the balls overlap
+  EXPECT_THROW(MakeDumbbell(1.0, 0.2, 0.25, 8), std::invalid_argument); // neck wider than balls
+  EXPECT_THROW(MakePlateWithBoss(1.0, 0.01, 0.6, 0.1, 8), std::invalid_argument);
 }

@@ -3,7 +3,9 @@
 // white noise, area-proportional density, samples on their triangles.
 #include "Geometry/KdTree.h"
 #include "Geometry/Vec3.h"
+#include "Mesh/TriangleLocator.h"
 #include "Sampling/BlueNoiseSampler.h"
+#include "Sampling/LocalThickness.h"
 #include "Support/Parallel.h"
 #include "Surface/AnalyticShapes.h"
 #include "Surface/SurfacePreparation.h"
@@ -212,4 +214,142 @@ TEST(BlueNoiseSurfaceSampler, OpenSurfaceIsRefused)
   EXPECT_EQ(sampler->GetOutput()->GetNumberOfPoints(), 0);
   EXPECT_EQ(errors->Count, 1);
   EXPECT_NE(errors->Last.find("not closed: 3 boundary edges"), std::string::npos) << errors->Last;
+}
+
+namespace
+{
+SurfaceSamples SampleAdaptively(const TriangleMesh& mesh, std::size_t n, std::uint64_t seed = 1)
+{
+  SamplingOptions options;
+  options.NumberOfSamples = n;
+  options.Seed = seed;
+  options.Adaptive = true;
+  return SampleSurface(mesh, options);
+}
+
+// The dumbbell's neck (radius 0.02, visible for |z| < ~0.1) is thinner than
+// the uniform spacing of 1,500 samples (~0.028).
+const TriangleMesh& Dumbbell()
+{
+  static const TriangleMesh mesh = MakeDumbbell(1.0, 0.2, 0.02, 12);
+  return mesh;
+}
+
+bool OnNeck(const Point3& p)
+{
+  return std::fabs(p[2]) < 0.08 && std::hypot(p[0], p[1]) < 0.021;
+}
+}
+
+TEST(LocalThickness, RaysFindTheFarSide)
+{
+  // A 2 x 1 x 0.1 plate: 0.1 behind its large faces (away from the rim),
+  // and a ball of radius 1: the median ray, 25 degrees off the normal,
+  // crosses a chord of 2 cos(25 deg), 1.64 deep along the normal.
+  const TriangleMesh plate = MakeRoundedBox({ 2.0, 1.0, 0.1 }, 0.0, 16);
+  const TriangleMesh ball = MakeSphere(1.0, 16);
+  for (const TriangleMesh* mesh : { &plate, &ball })
+  {
+    const TriangleLocator locator(*mesh);
+    const SurfaceSamples s = Sample(*mesh, 400);
+    const std::vector<double> t = EstimateLocalThickness(*mesh, locator, s.Points, s.TriangleIds);
+    ASSERT_EQ(t.size(), s.Points.size());
+    for (std::size_t i = 0; i < t.size(); ++i)
+    {
+      const Point3& p = s.Points[i];
+      if (mesh == &ball)
+      {
+        EXPECT_NEAR(t[i], 2.0 * std::pow(std::cos(25.0 * M_PI / 180.0), 2), 0.04); // facets
+      }
+      else if (std::fabs(std::fabs(p[2]) - 0.05) < 1e-12 && std::fabs(p[0]) < 0.8 &&
+        std::fabs(p[1]) < 0.3)
+      {
+        EXPECT_NEAR(t[i], 0.1, 1e-9) << "at " << p[0] << " " << p[1];
+      }
+    }
+  }
+  // Rays stop at MaximumThickness, which is then the answer.
+  const TriangleLocator locator(ball);
+  ThicknessOptions capped;
+  capped.MaximumThickness = 0.5;
+  const std::vector<double> t =
+    EstimateLocalThickness(ball, locator, { ball.Points[ball.Triangles[0][0]] }, { 0 }, capped);
+  EXPECT_EQ(t[0], 0.5);
+}
+
+TEST(BlueNoiseSampler, AdaptiveDensityFollowsThickness)
+{
+  const std::size_t n = 1000; // uniform spacing 0.034, above the neck's diameter
+  const SurfaceSamples uniform = Sample(Dumbbell(), n);
+  const SurfaceSamples adaptive = SampleAdaptively(Dumbbell(), n);
+  ASSERT_EQ(adaptive.Points.size(), n);
+  ASSERT_EQ(adaptive.LocalThickness.size(), n);
+  auto neckCount = [](const SurfaceSamples& s)
+  { return std::count_if(s.Points.begin(), s.Points.end(), OnNeck); };
+  std::cout << "samples on the neck: uniform " << neckCount(uniform) << ", adaptive "
+            << neckCount(adaptive) << "\n";
+  // Spacing half the neck's diameter instead of 0.034: (0.034 / 0.02)^2 = 2.9
+  // times denser.
+  EXPECT_GE(neckCount(adaptive), 2.4 * neckCount(uniform));
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (OnNeck(adaptive.Points[i]))
+    {
+      EXPECT_NEAR(adaptive.LocalThickness[i], 0.04, 0.004);
+      EXPECT_LE(adaptive.Spacing[i], 0.5 * adaptive.LocalThickness[i]);
+    }
+  }
+}
+
+TEST(BlueNoiseSampler, AdaptiveIsBlueNoiseAtTheLocalSpacing)
+{
+  // Nearest-neighbour distances against the spacing the field asked for.
+  const SurfaceSamples s = SampleAdaptively(Dumbbell(), 1500);
+  const KdTree tree(s.Points);
+  std::vector<std::uint32_t> ids;
+  std::vector<double> d2;
+  double worst = HUGE_VAL, worstOwn = HUGE_VAL;
+  for (std::size_t i = 0; i < s.Points.size(); ++i)
+  {
+    tree.Nearest(s.Points[i], 2, ids, d2);
+    worst = std::min(worst, std::sqrt(d2[1]) / std::min(s.Spacing[i], s.Spacing[ids[1]]));
+    worstOwn = std::min(worstOwn, std::sqrt(d2[1]) / s.Spacing[i]);
+  }
+  std::cout << "adaptive: min nearest / local ideal " << worst << ", own " << worstOwn << "\n";
+  EXPECT_GE(worst, 0.6);
+}
+
+TEST(BlueNoiseSampler, AdaptiveIsDeterministicAndUniformWithoutThinParts)
+{
+  const SurfaceSamples a = SampleAdaptively(Dumbbell(), 1500, 7);
+  EXPECT_TRUE(Identical(a, SampleAdaptively(Dumbbell(), 1500, 7)));
+  const SurfaceSamples one =
+    RunWithThreads(1, [&] { return SampleAdaptively(Dumbbell(), 1500, 7); });
+  const SurfaceSamples two =
+    RunWithThreads(2, [&] { return SampleAdaptively(Dumbbell(), 1500, 7); });
+  EXPECT_TRUE(Identical(a, one));
+  EXPECT_TRUE(Identical(a, two));
+  EXPECT_EQ(one.Spacing, two.Spacing);
+  // Nothing on a ball is thin: the samples are the uniform ones.
+  const TriangleMesh ball = MakeSphere(1.0, 16);
+  EXPECT_TRUE(Identical(SampleAdaptively(ball, 2000), Sample(ball, 2000)));
+}
+
+TEST(BlueNoiseSurfaceSampler, AdaptiveOutputsThicknessAndSpacing)
+{
+  vtkNew<vtkBlueNoiseSurfaceSampler> sampler;
+  sampler->SetInputData(test::ToPolyData(Dumbbell()));
+  sampler->SetNumberOfSamples(800);
+  sampler->AdaptiveOn();
+  sampler->Update();
+  vtkPolyData* sites = sampler->GetOutput();
+  EXPECT_EQ(sites->GetNumberOfPoints(), 800);
+  vtkDataArray* thickness = sites->GetPointData()->GetArray("LocalThickness");
+  vtkDataArray* spacing = sites->GetPointData()->GetArray("Spacing");
+  ASSERT_NE(thickness, nullptr);
+  ASSERT_NE(spacing, nullptr);
+  double range[2];
+  thickness->GetRange(range);
+  EXPECT_NEAR(range[0], 0.04, 0.01); // the neck
+  EXPECT_GT(range[1], 0.2);          // the balls, thick enough to stop the rays
 }

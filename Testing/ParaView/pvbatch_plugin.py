@@ -72,6 +72,15 @@ check(abs(total / surface.GetFieldData().GetArray("Area").GetValue(0) - 1) < 1e-
 # The fillets are smooth (each facet turns by under 12 degrees): no sharp edges.
 check(sites.GetPointData().GetArray("ConvexFeature").GetRange() == (0, 0),
       "sharp edges reported on a filleted box")
+# Adaptive sampling on a dumbbell: its neck is thin, and the sites say so.
+dumbbell = MedialTestShape(Shape="Dumbbell", Length=1.0, Radius=0.2, MinorRadius=0.02)
+adaptive = BlueNoiseSurfaceSampler(Input=dumbbell, NumberOfSamples=1000, Adaptive=1)
+adaptive.UpdatePipeline()
+thin = servermanager.Fetch(adaptive)
+check(thin.GetNumberOfPoints() == 1000, "adaptive sampling gave %d sites" % thin.GetNumberOfPoints())
+thickness = thin.GetPointData().GetArray("LocalThickness")
+check(thickness is not None and abs(thickness.GetRange()[0] - 0.04) < 0.01,
+      "LocalThickness does not show the dumbbell's neck (0.04 thick)")
 # The initial medial mesh from the restricted Voronoi diagram's sites.
 voronoi = VoronoiMedialAxis(Input=shape, Sites=OutputPort(rvd, 1))
 voronoi.UpdatePipeline()

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Closest point on a triangle mesh through a bounding-box hierarchy over its
-// triangles (BoxTree.h). Queries are const and thread-safe.
+// Closest point on, and first hit of a ray with, a triangle mesh through a
+// bounding-box hierarchy over its triangles (BoxTree.h). Queries are const
+// and thread-safe.
 #ifndef medialaxis_TriangleLocator_h
 #define medialaxis_TriangleLocator_h
 
@@ -8,6 +9,7 @@
 #include "Geometry/ClosestPoint.h"
 #include "Mesh/PolygonMesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -48,7 +50,95 @@ public:
     return std::sqrt(best2);
   }
 
+  struct RayHit
+  {
+    double Distance = std::numeric_limits<double>::infinity(); // along the unit direction
+    Index Triangle = -1;                                       // -1: no hit
+  };
+
+  /// The nearest triangle crossed by the ray origin + s * direction,
+  /// minimumDistance < s < maximumDistance, other than `skipTriangle` (the
+  /// one the origin lies on). `direction` must have unit length.
+  RayHit FirstHit(const Point3& origin, const Point3& direction, double minimumDistance,
+    double maximumDistance, Index skipTriangle = -1) const
+  {
+    Point3 inverse;
+    for (int k = 0; k < 3; ++k)
+    {
+      inverse[k] = 1.0 / direction[k]; // +-infinity on axis-parallel rays: the slabs still work
+    }
+    RayHit hit;
+    double best = maximumDistance;
+    this->Tree.Search([&](const BoxTree::Node& n)
+      { return RayEntry(origin, inverse, n.Bounds, best); },
+      [&](std::uint32_t t)
+      {
+        if (static_cast<Index>(t) == skipTriangle)
+        {
+          return false;
+        }
+        const Triangle& tri = this->Mesh.Triangles[t];
+        const double s = RayTriangle(origin, direction, this->Mesh.Points[tri[0]],
+          this->Mesh.Points[tri[1]], this->Mesh.Points[tri[2]]);
+        if (s > minimumDistance && s < best)
+        {
+          best = s;
+          hit = { s, static_cast<Index>(t) };
+        }
+        return false;
+      },
+      best);
+    return hit;
+  }
+
 private:
+  // Where the ray enters the box (0 if it starts inside), or infinity if it
+  // misses it before `limit` (slab test).
+  static double RayEntry(const Point3& origin, const Point3& inverse, const Box& b, double limit)
+  {
+    double enter = 0.0, leave = limit;
+    for (int k = 0; k < 3; ++k)
+    {
+      double t0 = (b.Lo[k] - origin[k]) * inverse[k], t1 = (b.Hi[k] - origin[k]) * inverse[k];
+      if (t0 > t1)
+      {
+        std::swap(t0, t1);
+      }
+      // NaN (0 * infinity, a ray in a slab's plane) leaves the bounds unchanged.
+      enter = t0 > enter ? t0 : enter;
+      leave = t1 < leave ? t1 : leave;
+    }
+    return enter <= leave ? enter : std::numeric_limits<double>::infinity();
+  }
+
+  // Ray parameter of the crossing with triangle abc (Moller-Trumbore), or
+  // -1 if the ray misses it or runs parallel to it.
+  static double RayTriangle(const Point3& origin, const Point3& direction, const Point3& a,
+    const Point3& b, const Point3& c)
+  {
+    const Point3 e1 = b - a, e2 = c - a;
+    const Point3 p = Cross(direction, e2);
+    const double det = Dot(e1, p);
+    if (det == 0.0)
+    {
+      return -1.0;
+    }
+    const double inv = 1.0 / det;
+    const Point3 s = origin - a;
+    const double u = Dot(s, p) * inv;
+    if (u < 0.0 || u > 1.0)
+    {
+      return -1.0;
+    }
+    const Point3 q = Cross(s, e1);
+    const double v = Dot(direction, q) * inv;
+    if (v < 0.0 || u + v > 1.0)
+    {
+      return -1.0;
+    }
+    return Dot(e2, q) * inv;
+  }
+
   const TriangleMesh& Mesh;
   BoxTree Tree;
 };

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Sampling/BlueNoiseSampler.h"
 
-#include "Geometry/AreaSampling.h"
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/KdTree.h"
-#include "Geometry/MortonOrder.h"
 #include "Geometry/Vec3.h"
 #include "Mesh/TriangleAdjacency.h"
-#include "Support/Random.h"
+#include "Sampling/SizingField.h"
+#include "Sampling/SurfaceCandidates.h"
 #include "Surface/SurfacePreparation.h"
 #include "Voronoi/RestrictedVoronoi.h"
 
@@ -16,79 +15,39 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace medialaxis
 {
 namespace
 {
-// Area-weighted uniform random points on the surface.
-void RandomCandidates(const TriangleMesh& surface, std::size_t count, std::uint64_t seed,
-  std::vector<Point3>& points, std::vector<Index>& triangles)
-{
-  const std::size_t nt = surface.Triangles.size();
-  std::vector<double> cumulative(nt);
-  double total = 0.0;
-  for (std::size_t t = 0; t < nt; ++t)
-  {
-    const Triangle& tri = surface.Triangles[t];
-    const Point3& a = surface.Points[tri[0]];
-    total += 0.5 * Norm(Cross(surface.Points[tri[1]] - a, surface.Points[tri[2]] - a));
-    cumulative[t] = total;
-  }
-  points.resize(count);
-  triangles.resize(count);
-  Random random(seed);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    const double u = random.Uniform() * total;
-    std::size_t t = static_cast<std::size_t>(
-      std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin());
-    t = std::min(t, nt - 1);
-    while (t > 0 && cumulative[t] == cumulative[t - 1])
-    {
-      --t; // never land on a zero-area triangle
-    }
-    const Triangle& tri = surface.Triangles[t];
-    const double r1 = random.Uniform(), r2 = random.Uniform(); // drawn in this order
-    points[i] = PointInTriangle(
-      surface.Points[tri[0]], surface.Points[tri[1]], surface.Points[tri[2]], r1, r2);
-    triangles[i] = static_cast<Index>(t);
-  }
-}
-
-// Reorders the candidates along a Morton (Z-order) curve so that points close
-// in space are close in memory: every later pass touches neighbours.
-void SortSpatially(std::vector<Point3>& points, std::vector<Index>& triangles)
-{
-  const std::size_t n = points.size();
-  const std::vector<std::uint32_t> order =
-    MortonOrder(n, [&points](std::size_t i) { return points[i]; });
-  std::vector<Point3> sortedPoints(n);
-  std::vector<Index> sortedTriangles(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    sortedPoints[i] = points[order[i]];
-    sortedTriangles[i] = triangles[order[i]];
-  }
-  points.swap(sortedPoints);
-  triangles.swap(sortedTriangles);
-}
-
 // Yuksel's weighted sample elimination: repeatedly removes the candidate
 // with the largest crowding weight until `target` remain. Returns the kept
 // candidate ids in increasing order. Written by hand: no library offers it.
-std::vector<std::uint32_t> EliminateSamples(
-  const std::vector<Point3>& candidates, std::size_t target, double area)
+// With `spacing` (one wanted spacing per candidate) two candidates crowd each
+// other within the smaller of their spacings, so the neighbour lists stay
+// symmetric and every region thins to its own density (Yuksel's adaptive
+// sampling, section 5).
+std::vector<std::uint32_t> EliminateSamples(const std::vector<Point3>& candidates,
+  const std::vector<double>& spacing, std::size_t target, double area)
 {
   const std::size_t m = candidates.size();
   constexpr double beta = 0.65, gamma = 1.5; // and alpha = 8, in `weight`
   const double rMax = std::sqrt(area / (2.0 * std::sqrt(3.0) * target));
-  const double rMin = rMax * (1.0 - std::pow(double(target) / double(m), gamma)) * beta;
-  const double reach = 2.0 * rMax;
-  auto weight = [&](double d)
+  const double shrink = (1.0 - std::pow(double(target) / double(m), gamma)) * beta;
+  const double rMin = rMax * shrink;
+  const double uniformReach = 2.0 * rMax;
+  const bool adaptive = !spacing.empty();
+  auto weight = [&](double d, std::size_t i, std::size_t j)
   {
-    d = std::max(std::min(d, reach), 2.0 * rMin); // weight limiting
+    const double reach = adaptive ? std::min(spacing[i], spacing[j]) : uniformReach;
+    if (adaptive && d >= reach)
+    {
+      return 0.0;
+    }
+    const double floor = adaptive ? reach * shrink : 2.0 * rMin;
+    d = std::max(std::min(d, reach), floor); // weight limiting
     const double x = 1.0 - d / reach;
     const double x2 = x * x, x4 = x2 * x2;
     return x4 * x4; // alpha = 8
@@ -110,15 +69,15 @@ std::vector<std::uint32_t> EliminateSamples(
       {
         for (std::size_t i = b * block; i < std::min(m, (b + 1) * block); ++i)
         {
-          tree.WithinRadius(candidates[i], reach, matches, false);
+          tree.WithinRadius(candidates[i], adaptive ? spacing[i] : uniformReach, matches, false);
           std::uint32_t n = 0;
           for (const auto& [j, d2] : matches)
           {
-            if (j == i)
+            const double w = j == i ? 0.0 : weight(std::sqrt(d2), i, j);
+            if (w == 0.0 && (j == i || adaptive))
             {
               continue;
             }
-            const double w = weight(std::sqrt(d2));
             blockIds[b].push_back(j);
             blockWeights[b].push_back(static_cast<float>(w));
             total[i] += w;
@@ -319,22 +278,34 @@ SurfaceSamples SampleSurface(const TriangleMesh& surface, const SamplingOptions&
 
   const std::size_t m =
     std::max(n, static_cast<std::size_t>(std::ceil(std::max(1.0, options.CandidateRatio) * n)));
-  std::vector<Point3> candidates;
-  std::vector<Index> candidateTriangles;
-  RandomCandidates(surface, m, options.Seed, candidates, candidateTriangles);
-  SortSpatially(candidates, candidateTriangles);
+  std::unique_ptr<SizingField> field;
+  if (options.Adaptive)
+  {
+    field = std::make_unique<SizingField>(surface, n, options.Seed, options.Sizing);
+    if (!report(0.1 * share))
+    {
+      samples.Aborted = true;
+      return samples;
+    }
+  }
+  // A field without thin parts samples uniformly: exactly as without it.
+  Candidates candidates = field && !field->IsUniform()
+    ? AdaptiveCandidates(surface, *field, m, options.Seed)
+    : UniformCandidates(surface, m, options.Seed);
+  SortSpatially(candidates);
   if (!report(0.3 * share))
   {
     samples.Aborted = true;
     return samples;
   }
-  const std::vector<std::uint32_t> kept = EliminateSamples(candidates, n, area);
+  const std::vector<std::uint32_t> kept =
+    EliminateSamples(candidates.Points, candidates.Spacing, n, area);
   samples.Points.reserve(n);
   samples.TriangleIds.reserve(n);
   for (std::uint32_t i : kept)
   {
-    samples.Points.push_back(candidates[i]);
-    samples.TriangleIds.push_back(candidateTriangles[i]);
+    samples.Points.push_back(candidates.Points[i]);
+    samples.TriangleIds.push_back(candidates.Triangles[i]);
   }
   if (!report(share))
   {
@@ -360,6 +331,20 @@ SurfaceSamples SampleSurface(const TriangleMesh& surface, const SamplingOptions&
   for (std::size_t i = 0; i < samples.Points.size(); ++i)
   {
     samples.Normals[i] = TriangleNormal(surface, samples.TriangleIds[i]);
+  }
+  if (field)
+  {
+    samples.LocalThickness.resize(samples.Points.size());
+    samples.Spacing.resize(samples.Points.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.Points.size(), 1024),
+      [&](const tbb::blocked_range<std::size_t>& r)
+      {
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+        {
+          samples.LocalThickness[i] = field->Thickness(samples.Points[i]);
+          samples.Spacing[i] = field->Spacing(samples.Points[i]);
+        }
+      });
   }
   report(1.0);
   return samples;

@@ -7,6 +7,7 @@
 #define medialaxis_BlueNoiseSampler_h
 
 #include "Mesh/PolygonMesh.h"
+#include "Sampling/SizingField.h"
 
 #include <cstdint>
 #include <functional>
@@ -20,8 +21,13 @@ struct SamplingOptions
   std::uint64_t Seed = 0;
   /// Random candidates per output sample before elimination.
   double CandidateRatio = 4.0;
-  /// Lloyd steps of restricted centroidal Voronoi relaxation.
+  /// Lloyd steps of restricted centroidal Voronoi relaxation. They keep
+  /// each region's count of samples, so an adaptive density stays.
   int RelaxationIterations = 0;
+  /// Denser on thin parts, by the local thickness (SizingField.h); the same
+  /// as uniform where no part is thin.
+  bool Adaptive = false;
+  SizingOptions Sizing;
   /// Fraction in [0, 1]; returning false aborts (the result is then empty).
   std::function<bool(double)> Progress;
 };
@@ -31,6 +37,8 @@ struct SurfaceSamples
   std::vector<Point3> Points;
   std::vector<Index> TriangleIds; // the triangle each sample lies on
   std::vector<Point3> Normals;    // unit normal of that triangle
+  // Adaptive only: the local thickness and the wanted spacing at each sample.
+  std::vector<double> LocalThickness, Spacing;
   bool Aborted = false;
 };
 

@@ -578,6 +578,60 @@ LabelledTriangleMesh MakeFilletedPrism(const Point3& sides,
   return part;
 }
 
+namespace
+{
+// The surface of revolution around z of `profile` (distance from the axis,
+// z), given from the top pole (0, top) to the bottom pole (0, bottom), both
+// excluded, with `around` segments per circle. With labels, triangle labels
+// follow: -1 at the poles, labelBefore[i + 1] between profile points i and i + 1.
+TriangleMesh Revolve(const std::vector<std::array<double, 2>>& profile, double top, double bottom,
+  int around, const std::vector<int>* labelBefore = nullptr, std::vector<int>* labels = nullptr)
+{
+  TriangleMesh mesh;
+  auto ring = [around](std::size_t i, int k)
+  { return static_cast<Index>(i * around + k % around); };
+  for (const auto& p : profile)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      const double angle = 2.0 * Pi * k / around;
+      mesh.Points.push_back({ p[0] * std::cos(angle), p[0] * std::sin(angle), p[1] });
+    }
+  }
+  auto label = [&](int value)
+  {
+    if (labels)
+    {
+      labels->resize(mesh.Triangles.size(), value);
+    }
+  };
+  const Index topPole = static_cast<Index>(mesh.Points.size());
+  mesh.Points.push_back({ 0.0, 0.0, top });
+  const Index bottomPole = topPole + 1;
+  mesh.Points.push_back({ 0.0, 0.0, bottom });
+  for (int k = 0; k < around; ++k)
+  {
+    mesh.Triangles.push_back({ topPole, ring(0, k), ring(0, k + 1) });
+  }
+  label(-1);
+  for (std::size_t i = 0; i + 1 < profile.size(); ++i)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      AddQuad(mesh, ring(i, k), ring(i + 1, k), ring(i + 1, k + 1), ring(i, k + 1));
+    }
+    label(labelBefore ? (*labelBefore)[i + 1] : -1);
+  }
+  const std::size_t last = profile.size() - 1;
+  for (int k = 0; k < around; ++k)
+  {
+    mesh.Triangles.push_back({ bottomPole, ring(last, k + 1), ring(last, k) });
+  }
+  label(-1);
+  return mesh;
+}
+}
+
 LabelledTriangleMesh MakeRoundedCylinder(
   double radius, double height, double topFilletRadius, double bottomFilletRadius, int resolution)
 {
@@ -636,41 +690,129 @@ LabelledTriangleMesh MakeRoundedCylinder(
   straight(radius - rb, bottom, 0.0, bottom, false);
 
   LabelledTriangleMesh part;
-  TriangleMesh& mesh = part.Mesh;
-  auto ring = [around](std::size_t i, int k)
-  { return static_cast<Index>(i * around + k % around); };
-  for (const auto& p : profile)
-  {
-    for (int k = 0; k < around; ++k)
-    {
-      const double angle = 2.0 * Pi * k / around;
-      mesh.Points.push_back({ p[0] * std::cos(angle), p[0] * std::sin(angle), p[1] });
-    }
-  }
-  const Index topPole = static_cast<Index>(mesh.Points.size());
-  mesh.Points.push_back({ 0.0, 0.0, top });
-  const Index bottomPole = topPole + 1;
-  mesh.Points.push_back({ 0.0, 0.0, bottom });
-  for (int k = 0; k < around; ++k)
-  {
-    mesh.Triangles.push_back({ topPole, ring(0, k), ring(0, k + 1) });
-    part.FilletId.push_back(-1);
-  }
-  for (std::size_t i = 0; i + 1 < profile.size(); ++i)
-  {
-    for (int k = 0; k < around; ++k)
-    {
-      AddQuad(mesh, ring(i, k), ring(i + 1, k), ring(i + 1, k + 1), ring(i, k + 1));
-      part.FilletId.resize(mesh.Triangles.size(), labelBefore[i + 1]);
-    }
-  }
-  const std::size_t last = profile.size() - 1;
-  for (int k = 0; k < around; ++k)
-  {
-    mesh.Triangles.push_back({ bottomPole, ring(last, k + 1), ring(last, k) });
-    part.FilletId.push_back(-1);
-  }
+  part.Mesh = Revolve(profile, top, bottom, around, &labelBefore, &part.FilletId);
   return part;
+}
+
+TriangleMesh MakeDumbbell(double length, double ballRadius, double neckRadius, int resolution)
+{
+  RequirePositive(length, "dumbbell length");
+  RequirePositive(ballRadius, "dumbbell ball radius");
+  RequirePositive(neckRadius, "dumbbell neck radius");
+  const double centre = 0.5 * length - ballRadius; // of the top ball; the bottom one at -centre
+  if (!(neckRadius < ballRadius) ||
+    !(centre - std::sqrt(ballRadius * ballRadius - neckRadius * neckRadius) > 0.0))
+  {
+    throw std::invalid_argument(
+      "the dumbbell's balls must not meet and its neck must be thinner than them");
+  }
+  resolution = std::max(resolution, 2);
+  // A segment of a ball's great circle: the neck gets as many around.
+  const int around = 4 * resolution;
+  const double spacing = 0.5 * Pi * ballRadius / resolution;
+  // The top ball from its pole down to where it meets the neck (polar angle
+  // from the top), the neck, then the bottom ball mirrored.
+  const double meet = Pi - std::asin(neckRadius / ballRadius);
+  const int arcSegments = std::max(2, static_cast<int>(std::ceil(meet / (0.5 * Pi) * resolution)));
+  std::vector<std::array<double, 2>> upper;
+  for (int i = 1; i <= arcSegments; ++i)
+  {
+    const double angle = meet * i / arcSegments;
+    upper.push_back({ ballRadius * std::sin(angle), centre + ballRadius * std::cos(angle) });
+  }
+  const double neckEnd = upper.back()[1];
+  const int neckSegments = std::max(1, static_cast<int>(std::lround(2.0 * neckEnd / spacing)));
+  std::vector<std::array<double, 2>> profile = upper;
+  for (int i = 1; i < neckSegments; ++i)
+  {
+    profile.push_back({ neckRadius, neckEnd - 2.0 * neckEnd * i / neckSegments });
+  }
+  for (auto it = upper.rbegin(); it != upper.rend(); ++it)
+  {
+    profile.push_back({ (*it)[0], -(*it)[1] });
+  }
+  return Revolve(profile, 0.5 * length, -0.5 * length, around);
+}
+
+TriangleMesh MakePlateWithBoss(
+  double side, double thickness, double bossRadius, double bossHeight, int resolution)
+{
+  RequirePositive(side, "plate side");
+  RequirePositive(thickness, "plate thickness");
+  RequirePositive(bossRadius, "boss radius");
+  RequirePositive(bossHeight, "boss height");
+  if (!(bossRadius < 0.45 * side))
+  {
+    throw std::invalid_argument("the boss must fit on the plate (radius below 0.45 x side)");
+  }
+  resolution = std::max(resolution, 2);
+  // Around the axis: a multiple of 8 angles, so that the plate's corners
+  // (at 45 degrees) are among them.
+  const int around = 8 * ((4 * resolution + 7) / 8);
+  const double spacing = 2.0 * Pi * bossRadius / around;
+  const double half = 0.5 * side, top = 0.5 * thickness;
+  // The top and bottom faces are annuli of rings from the boss's circle
+  // (ring 0) to the square outline (last ring), each ring point blended
+  // between the two along its angle.
+  const int rings = std::max(2, static_cast<int>(std::lround((half - bossRadius) / spacing)));
+  TriangleMesh mesh;
+  auto annulus = [&](double z)
+  {
+    std::vector<std::vector<Index>> ids(rings + 1, std::vector<Index>(around));
+    for (int j = 0; j <= rings; ++j)
+    {
+      const double blend = double(j) / rings;
+      for (int k = 0; k < around; ++k)
+      {
+        const double angle = 2.0 * Pi * k / around;
+        const double c = std::cos(angle), s = std::sin(angle);
+        const double toSquare = half / std::max(std::fabs(c), std::fabs(s));
+        const double r = (1.0 - blend) * bossRadius + blend * toSquare;
+        ids[j][k] = static_cast<Index>(mesh.Points.size());
+        mesh.Points.push_back({ r * c, r * s, z });
+      }
+    }
+    return ids;
+  };
+  const auto upper = annulus(top), lower = annulus(-top);
+  for (int j = 0; j < rings; ++j)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      const int k1 = (k + 1) % around;
+      AddQuad(mesh, upper[j][k], upper[j + 1][k], upper[j + 1][k1], upper[j][k1]);
+      AddQuad(mesh, lower[j][k], lower[j][k1], lower[j + 1][k1], lower[j + 1][k]);
+    }
+  }
+  auto wall = [&](const std::vector<Index>& below, const std::vector<Index>& above)
+  {
+    for (int k = 0; k < around; ++k)
+    {
+      const int k1 = (k + 1) % around;
+      AddQuad(mesh, below[k], below[k1], above[k1], above[k]);
+    }
+  };
+  wall(lower[rings], upper[rings]); // the plate's rim
+  // The boss: rows up its side from the top face, then its cap.
+  const int rows = std::max(1, static_cast<int>(std::lround(bossHeight / spacing)));
+  std::vector<Index> previous = upper[0];
+  for (int i = 1; i <= rows; ++i)
+  {
+    std::vector<Index> current(around);
+    for (int k = 0; k < around; ++k)
+    {
+      const Point3& p = mesh.Points[previous[k]];
+      current[k] = static_cast<Index>(mesh.Points.size());
+      mesh.Points.push_back({ p[0], p[1], top + bossHeight * i / rows });
+    }
+    wall(previous, current);
+    previous.swap(current);
+  }
+  std::vector<int> unused;
+  const int capRings = std::max(1, around / 8);
+  AddCap(mesh, previous, { 0.0, 0.0, top + bossHeight }, capRings, true, &unused);
+  AddCap(mesh, lower[0], { 0.0, 0.0, -top }, capRings, false, &unused);
+  return mesh;
 }
 
 AreaVolume LBlockAreaVolume(const Point3& sides)
@@ -703,5 +845,24 @@ AreaVolume TorusAreaVolume(double majorRadius, double minorRadius)
 AreaVolume CylinderAreaVolume(double radius, double height)
 {
   return { 2 * Pi * radius * height + 2 * Pi * radius * radius, Pi * radius * radius * height };
+}
+
+AreaVolume DumbbellAreaVolume(double length, double ballRadius, double neckRadius)
+{
+  // Each ball loses the cap inside the neck; the neck shows between the caps.
+  const double inner = std::sqrt(ballRadius * ballRadius - neckRadius * neckRadius);
+  const double cap = ballRadius - inner;
+  const double neck = 2.0 * (0.5 * length - ballRadius - inner);
+  return { 2.0 * (4.0 * Pi * ballRadius * ballRadius - 2.0 * Pi * ballRadius * cap) +
+      2.0 * Pi * neckRadius * neck,
+    2.0 * 4.0 / 3.0 * Pi * ballRadius * ballRadius * ballRadius +
+      Pi * neckRadius * neckRadius * neck };
+}
+
+AreaVolume PlateWithBossAreaVolume(
+  double side, double thickness, double bossRadius, double bossHeight)
+{
+  return { 2.0 * side * side + 4.0 * side * thickness + 2.0 * Pi * bossRadius * bossHeight,
+    side * side * thickness + Pi * bossRadius * bossRadius * bossHeight };
 }
 }

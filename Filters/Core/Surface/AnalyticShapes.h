@@ -36,6 +36,24 @@ TriangleMesh MakeCylinder(double radius, double height, int resolution);
 /// a regular grid with `resolution` cells per half side.
 TriangleMesh MakeLBlock(const Point3& sides, int resolution);
 
+/// Dumbbell along z, `length` from pole to pole: two balls of radius
+/// `ballRadius` joined by a neck, a cylinder of radius `neckRadius` between
+/// their centres. Its medial axis is connected and contractible (Euler
+/// characteristic 1): the axis segment through the neck and the two balls'
+/// centres. `resolution` is the number of segments along a quarter circle of
+/// a ball; the neck is as finely divided around.
+TriangleMesh MakeDumbbell(double length, double ballRadius, double neckRadius, int resolution);
+
+/// A square plate side x side x thickness (centred at the origin, thickness
+/// along z) with a cylindrical boss of radius `bossRadius` and height
+/// `bossHeight` standing on the centre of its top face; all edges sharp. Its
+/// medial axis is one connected, contractible piece (Euler characteristic
+/// 1): the plate's mid-plane sheet without holes, joined to the boss's.
+/// `resolution` is the number of segments along a quarter of the boss's
+/// circle.
+TriangleMesh MakePlateWithBoss(
+  double side, double thickness, double bossRadius, double bossHeight, int resolution);
+
 /// A generated part whose fillet faces are known exactly: FilletId[t] is the
 /// fillet triangle t lies on, -1 for triangles on no fillet.
 struct LabelledTriangleMesh
@@ -75,6 +93,9 @@ AreaVolume CapsuleAreaVolume(double radius, double axisLength);
 AreaVolume TorusAreaVolume(double majorRadius, double minorRadius);
 AreaVolume CylinderAreaVolume(double radius, double height);
 AreaVolume LBlockAreaVolume(const Point3& sides);
+AreaVolume DumbbellAreaVolume(double length, double ballRadius, double neckRadius);
+AreaVolume PlateWithBossAreaVolume(
+  double side, double thickness, double bossRadius, double bossHeight);
 }
 
 #endif

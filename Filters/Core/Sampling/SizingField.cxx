@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Sampling/SizingField.h"
+
+#include "Geometry/Vec3.h"
+#include "Mesh/TriangleLocator.h"
+#include "Sampling/BlueNoiseSampler.h"
+#include "Sampling/SurfaceCandidates.h"
+#include "Surface/SurfacePreparation.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <queue>
+
+namespace medialaxis
+{
+namespace
+{
+// Lowers every value to at most its neighbours' plus `gradation` times their
+// distance (Dijkstra from the smallest values over the symmetric k-nearest
+// graph), so the spacing grows gradually away from a thin part.
+void LimitGradation(const std::vector<Point3>& points, const KdTree& tree, double gradation,
+  std::vector<double>& values)
+{
+  const std::size_t n = points.size();
+  constexpr std::size_t k = 8;
+  std::vector<std::vector<std::uint32_t>> neighbours(n);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512),
+    [&](const tbb::blocked_range<std::size_t>& r)
+    {
+      std::vector<std::uint32_t> ids;
+      std::vector<double> d2;
+      for (std::size_t i = r.begin(); i != r.end(); ++i)
+      {
+        tree.Nearest(points[i], k + 1, ids, d2);
+        for (std::uint32_t j : ids)
+        {
+          if (j != i)
+          {
+            neighbours[i].push_back(j);
+          }
+        }
+      }
+    });
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    for (std::size_t a = 0, m = neighbours[i].size(); a < m; ++a)
+    {
+      neighbours[neighbours[i][a]].push_back(i); // duplicates are harmless
+    }
+  }
+  using Entry = std::pair<double, std::uint32_t>; // ties go to the lower id
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    queue.push({ values[i], i });
+  }
+  while (!queue.empty())
+  {
+    const auto [value, i] = queue.top();
+    queue.pop();
+    if (value > values[i])
+    {
+      continue; // a stale entry
+    }
+    for (std::uint32_t j : neighbours[i])
+    {
+      const double limited = value + gradation * std::sqrt(Distance2(points[i], points[j]));
+      if (limited < values[j])
+      {
+        values[j] = limited;
+        queue.push({ limited, j });
+      }
+    }
+  }
+}
+}
+
+SizingField::SizingField(const TriangleMesh& surface, std::size_t numberOfSamples,
+  std::uint64_t seed, const SizingOptions& options)
+{
+  const double area = SurfaceArea(surface);
+  const std::size_t probes = std::max<std::size_t>(
+    64, static_cast<std::size_t>(std::ceil(options.ProbesPerSample * numberOfSamples)));
+  // A stream of its own, so the probes do not repeat the candidates.
+  Candidates drawn = UniformCandidates(surface, probes, seed ^ 0x5151A7E3C0FFEE11ull);
+  this->ProbePoints = std::move(drawn.Points);
+  this->Tree = std::make_unique<KdTree>(this->ProbePoints);
+  const double uniform = IdealSampleSpacing(area, std::max<std::size_t>(1, numberOfSamples));
+  const double finest = std::clamp(options.FinestSpacingRatio, 1e-3, 1.0);
+  const double perThickness = std::max(options.SpacingPerThickness, 1e-6);
+  // No spacing exceeds uniform / finest, so thicker than that / perThickness
+  // is thick enough: the rays stop there, which keeps them short.
+  this->ThickEnough = uniform / finest / perThickness;
+  {
+    const TriangleLocator locator(surface);
+    ThicknessOptions thickness = options.Thickness;
+    thickness.MaximumThickness = std::min(thickness.MaximumThickness, this->ThickEnough);
+    this->ProbeThickness =
+      EstimateLocalThickness(surface, locator, this->ProbePoints, drawn.Triangles, thickness);
+  }
+  std::vector<double> wanted(probes);
+  for (std::size_t i = 0; i < probes; ++i)
+  {
+    wanted[i] = std::min(perThickness * this->ProbeThickness[i], uniform / finest);
+  }
+  LimitGradation(this->ProbePoints, *this->Tree, options.Gradation, wanted);
+
+  this->Coarsest = uniform;
+  this->Uniform = *std::min_element(wanted.begin(), wanted.end()) >= uniform;
+  if (this->Uniform)
+  {
+    this->ProbeSpacing.assign(probes, uniform);
+    return;
+  }
+  // Each probe stands for area / probes of surface; a hexagonal packing of
+  // spacing h puts 2 / (sqrt(3) h^2) samples on unit area. The coarsest
+  // spacing H is found so that the total is the budget, with every spacing
+  // in [finest * H, H].
+  auto count = [&](double coarsest)
+  {
+    double sum = 0.0;
+    for (double w : wanted)
+    {
+      const double h = std::clamp(w, finest * coarsest, coarsest);
+      sum += 1.0 / (h * h);
+    }
+    return sum * (area / probes) * 2.0 / std::sqrt(3.0);
+  };
+  double lo = uniform, hi = uniform / finest;
+  for (int it = 0; it < 100 && hi - lo > 1e-12 * hi; ++it)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (count(mid) > static_cast<double>(numberOfSamples) ? lo : hi) = mid;
+  }
+  this->Coarsest = hi;
+  this->ProbeSpacing.resize(probes);
+  for (std::size_t i = 0; i < probes; ++i)
+  {
+    this->ProbeSpacing[i] = std::clamp(wanted[i], finest * hi, hi);
+  }
+}
+}

@@ -3,6 +3,7 @@
 // L-block concave filtering, determinism, and every shared mesh.
 #include "Geometry/Vec3.h"
 #include "Sampling/BlueNoiseSampler.h"
+#include "Support/DisjointSets.h"
 #include "Support/Parallel.h"
 #include "Surface/AnalyticShapes.h"
 #include "Surface/SurfacePreparation.h"
@@ -263,6 +264,45 @@ TEST(VoronoiMedialAxis, ConcaveFilteringOnAnLBlock)
   EXPECT_GT(removed, 0u);
   EXPECT_EQ(wronglyRemoved, 0u);
   EXPECT_EQ(kept, 0u);
+  EXPECT_EQ(EulerCharacteristic(on.Mat.Mesh), EulerCharacteristic(off.Mat.Mesh));
+}
+
+namespace
+{
+std::size_t CountComponents(const MedialMesh& mesh)
+{
+  DisjointSets sets(mesh.Centers.size());
+  for (const auto& f : mesh.Faces)
+  {
+    sets.Union(f[0], f[1]);
+    sets.Union(f[0], f[2]);
+  }
+  for (const auto& e : mesh.Edges)
+  {
+    sets.Union(e[0], e[1]);
+  }
+  std::size_t roots = 0;
+  for (std::size_t v = 0; v < mesh.Centers.size(); ++v)
+  {
+    roots += sets.Find(static_cast<Index>(v)) == static_cast<Index>(v) ? 1 : 0;
+  }
+  return roots;
+}
+}
+
+TEST(VoronoiMedialAxis, ConcaveFilteringKeepsTheDumbbellsNeck)
+{
+  // The neck meets each ball along a sharp concave circle, where the
+  // filtered faces form strips between the neck's medial axis and the
+  // balls': removing them must leave their spines, not cut the axis in three.
+  const TriangleMesh dumbbell = MakeDumbbell(1.0, 0.2, 0.02, 16);
+  const Pipeline off = RunPipeline(dumbbell, 10000, false);
+  const Pipeline on = RunPipeline(dumbbell, 10000, true);
+  std::cout << on.Mat.FilteredFaces << " faces filtered\n";
+  ASSERT_GT(on.Mat.FilteredFaces, 0u);
+  EXPECT_EQ(CountComponents(off.Mat.Mesh), 1u);
+  EXPECT_EQ(CountComponents(on.Mat.Mesh), 1u);
+  EXPECT_EQ(EulerCharacteristic(on.Mat.Mesh), 1);
   EXPECT_EQ(EulerCharacteristic(on.Mat.Mesh), EulerCharacteristic(off.Mat.Mesh));
 }
 

@@ -96,15 +96,19 @@ std::size_t CollapseFlaggedTriangles(
         }
       }
     });
-  const auto lineRows = buildRows(2 * mesh.Edges.size(),
-    [&mesh](auto&& add)
-    {
-      for (std::size_t e = 0; e < mesh.Edges.size(); ++e)
+  auto lineRowsOfMesh = [&mesh, &buildRows]()
+  {
+    return buildRows(2 * mesh.Edges.size(),
+      [&mesh](auto&& add)
       {
-        add(mesh.Edges[e][0], static_cast<Index>(e));
-        add(mesh.Edges[e][1], static_cast<Index>(e));
-      }
-    });
+        for (std::size_t e = 0; e < mesh.Edges.size(); ++e)
+        {
+          add(mesh.Edges[e][0], static_cast<Index>(e));
+          add(mesh.Edges[e][1], static_cast<Index>(e));
+        }
+      });
+  };
+  auto lineRows = lineRowsOfMesh(); // rebuilt when step 1 adds lines
   const std::vector<std::size_t>& faceStart = faceRows.first;
   const std::vector<Index>& vertexFaces = faceRows.second;
   const std::vector<std::size_t>& lineStart = lineRows.first;
@@ -155,7 +159,8 @@ std::size_t CollapseFlaggedTriangles(
   };
 
   // 1. Collapse flagged triangles through free edges.
-  std::vector<Index> queue, touched;
+  std::vector<Index> queue, touched, removedFaces;
+  std::vector<EdgeKey> collapsedEdges; // the free edges that went with them
   for (std::size_t f = 0; f < nf; ++f)
   {
     if (flagged[f])
@@ -186,6 +191,8 @@ std::size_t CollapseFlaggedTriangles(
     }
     faceAlive[f] = 0;
     ++removed;
+    removedFaces.push_back(f);
+    collapsedEdges.push_back(Key(t[freeK], t[(freeK + 1) % 3]));
     killVoronoiEdge(t[freeK], t[(freeK + 1) % 3]);
     for (Index v : t)
     {
@@ -204,6 +211,44 @@ std::size_t CollapseFlaggedTriangles(
   if (removed == 0)
   {
     return 0;
+  }
+
+  // A triangle collapsed through one edge leaves its other two: those that
+  // no triangle holds any more stay as lines, or a strip of flagged
+  // triangles between two parts of the complex would cut it in two.
+  {
+    std::sort(collapsedEdges.begin(), collapsedEdges.end());
+    std::vector<EdgeKey> existing, bare;
+    for (const auto& e : mesh.Edges)
+    {
+      existing.push_back(Key(e[0], e[1]));
+    }
+    std::sort(existing.begin(), existing.end());
+    for (Index f : removedFaces)
+    {
+      const auto& t = mesh.Faces[f];
+      for (int k = 0; k < 3; ++k)
+      {
+        const EdgeKey e = Key(t[k], t[(k + 1) % 3]);
+        if (trianglesOn(e[0], e[1], nullptr) == 0 &&
+          !std::binary_search(collapsedEdges.begin(), collapsedEdges.end(), e) &&
+          !std::binary_search(existing.begin(), existing.end(), e))
+        {
+          bare.push_back(e);
+        }
+      }
+    }
+    std::sort(bare.begin(), bare.end());
+    bare.erase(std::unique(bare.begin(), bare.end()), bare.end());
+    for (const EdgeKey& e : bare)
+    {
+      mesh.Edges.push_back({ e[0], e[1] });
+      edgeAlive.push_back(1);
+    }
+    if (!bare.empty())
+    {
+      lineRows = lineRowsOfMesh();
+    }
   }
 
   // 2. Voronoi edges left dangling are collapsed through vertices that

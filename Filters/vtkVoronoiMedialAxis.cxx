@@ -91,6 +91,7 @@ int vtkVoronoiMedialAxis::RequestData(
 
   medialaxis::VoronoiMedialAxisOptions options;
   options.ConcaveFiltering = this->ConcaveFiltering;
+  options.RepairThinParts = this->RepairThinParts;
   options.ConcaveFilterAlpha = this->ConcaveFilterAlpha;
   options.RelativeWeldTolerance = this->RelativeWeldTolerance;
   options.Progress = [this](double f)
@@ -131,7 +132,7 @@ int vtkVoronoiMedialAxis::RequestData(
       { "InsideCells", result.InsideCells },
       { "AmbiguousInsideTests", result.AmbiguousInsideTests },
       { "WeldedCells", result.WeldedCells }, { "FilteredTriangles", result.FilteredFaces },
-      { "DroppedPockets", result.DroppedPockets } })
+      { "DroppedPockets", result.DroppedPockets }, { "SpanningCells", result.SpanningCells } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }
@@ -143,6 +144,7 @@ void vtkVoronoiMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ConcaveFiltering: " << this->ConcaveFiltering << "\n";
+  os << indent << "RepairThinParts: " << this->RepairThinParts << "\n";
   os << indent << "ConcaveFilterAlpha: " << this->ConcaveFilterAlpha << "\n";
   os << indent << "RelativeWeldTolerance: " << this->RelativeWeldTolerance << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";

@@ -28,7 +28,7 @@
  * the Atlas of every vertex (its generating sites) as field data
  * `AtlasSites` / `AtlasOffsets` and point data `AtlasCount`; and field data
  * with counts (`DelaunayCells`, `InsideCells`, `AmbiguousInsideTests`,
- * `WeldedCells`, `FilteredTriangles`, `DroppedPockets`).
+ * `WeldedCells`, `FilteredTriangles`, `DroppedPockets`, `SpanningCells`).
  */
 #ifndef vtkVoronoiMedialAxis_h
 #define vtkVoronoiMedialAxis_h
@@ -48,6 +48,18 @@ public:
   vtkSetMacro(ConcaveFiltering, bool);
   vtkGetMacro(ConcaveFiltering, bool);
   vtkBooleanMacro(ConcaveFiltering, bool);
+  ///@}
+
+  ///@{
+  /// Keep the Delaunay cells that span a thin part from one side to the
+  /// other (two of their sites face away from each other through the solid)
+  /// although their circumcentres fall outside; their vertices move to the
+  /// middle of the facing sites, with the distance to the surface as radius.
+  /// Without it a part thinner than the sample spacing gets a medial sheet
+  /// full of holes (default on; the count is in field data `SpanningCells`).
+  vtkSetMacro(RepairThinParts, bool);
+  vtkGetMacro(RepairThinParts, bool);
+  vtkBooleanMacro(RepairThinParts, bool);
   ///@}
 
   ///@{
@@ -77,6 +89,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool ConcaveFiltering = true;
+  bool RepairThinParts = true;
   double ConcaveFilterAlpha = 0.7;
   double RelativeWeldTolerance = 1e-9;
   int NumberOfThreads = 0;

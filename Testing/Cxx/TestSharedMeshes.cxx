@@ -95,8 +95,6 @@ std::map<std::string, Expected> ReadSourcesTable()
 const std::map<std::string, std::string>& KnownTopologyExceptions()
 {
   static const std::map<std::string, std::string> exceptions = {
-    { "camel.off", "thin legs and neck" },
-    { "casting.off", "thin walls between bolt holes; right at 50,000 sites" },
     { "cheburashka.off", "thin ears" },
     { "dragon.obj", "thin claws, horns and teeth" },
     { "elephant.off", "thin trunk and tail" },

@@ -306,6 +306,66 @@ TEST(VoronoiMedialAxis, ConcaveFilteringKeepsTheDumbbellsNeck)
   EXPECT_EQ(EulerCharacteristic(on.Mat.Mesh), EulerCharacteristic(off.Mat.Mesh));
 }
 
+TEST(VoronoiMedialAxis, ThinPlateSheetHasNoHoles)
+{
+  // A plate 1% as thick as it is wide, sampled more sparsely than its
+  // thickness: the cells spanning it have their circumcentres far outside
+  // (paper 000, Fig. 19). Kept and moved to the mid-plane, they close the
+  // sheet; densely sampled where thin, the sheet is whole.
+  const TriangleMesh plate = MakePlateWithBoss(1.0, 0.01, 0.15, 0.2, 16);
+  auto initial = [&plate](bool adaptive, bool repair)
+  {
+    SamplingOptions sampling;
+    sampling.NumberOfSamples = 10000;
+    sampling.Adaptive = adaptive;
+    const SurfaceSamples sites = SampleSurface(plate, sampling);
+    const RestrictedVoronoiDiagram rvd = ComputeRestrictedVoronoi(plate, sites.Points);
+    VoronoiMedialAxisOptions options;
+    options.RepairThinParts = repair;
+    return ComputeVoronoiMedialAxis(
+      plate, sites.Points, sites.TriangleIds, rvd.ConcaveFeature, options);
+  };
+  const VoronoiMedialAxisResult holes = initial(false, false);
+  const VoronoiMedialAxisResult repaired = initial(false, true);
+  const VoronoiMedialAxisResult whole = initial(true, true);
+  const long long before = EulerCharacteristic(holes.Mesh);
+  const long long after = EulerCharacteristic(repaired.Mesh);
+  std::cout << "Euler characteristic: " << before << " without repair, " << after << " with "
+            << repaired.SpanningCells << " spanning cells kept, " << EulerCharacteristic(whole.Mesh)
+            << " sampled adaptively\n";
+  EXPECT_EQ(holes.SpanningCells, 0u);
+  EXPECT_LT(before, -100); // hundreds of holes
+  EXPECT_GT(repaired.SpanningCells, 1000u);
+  EXPECT_LE(std::llabs(after - 1), 2); // the last few where the boss meets the plate
+  EXPECT_EQ(CountComponents(whole.Mesh), 1u);
+  EXPECT_EQ(EulerCharacteristic(whole.Mesh), 1);
+  // The moved vertices stay inside.
+  EXPECT_EQ(CountOutside(plate, repaired.Mesh.Centers), 0);
+  EXPECT_EQ(CountOutside(plate, whole.Mesh.Centers), 0);
+}
+
+TEST(VoronoiMedialAxis, ThinPartRepairAddsNoLoops)
+{
+  // A CAD part (genus 0) with thin walls: some spanning cells would bridge
+  // two walls and make a loop; those clusters are left out, the others
+  // close holes.
+  const std::string path = std::string(MEDIALAXIS_MESH_DIR) + "/abc_00000077.obj";
+  if (!std::ifstream(path).good())
+  {
+    GTEST_SKIP() << "shared meshes not present";
+  }
+  vtkNew<vtkSurfaceFileReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  TriangleMesh part;
+  ASSERT_TRUE(PrepareSurfaceMesh(reader->GetOutput(), part).Ok());
+  const Pipeline p = RunPipeline(part, 50000);
+  std::cout << p.Mat.SpanningCells << " spanning cells kept\n";
+  EXPECT_GT(p.Mat.SpanningCells, 0u);
+  EXPECT_EQ(CountComponents(p.Mat.Mesh), 1u);
+  EXPECT_EQ(EulerCharacteristic(p.Mat.Mesh), 1);
+}
+
 TEST(VoronoiMedialAxis, IdenticalAcrossRunsAndThreads)
 {
   const TriangleMesh mesh = MakeRoundedBox({ 2, 1.5, 1 }, 0.25, 12);

@@ -7,7 +7,9 @@
 #include "Mesh/TriangleAdjacency.h"
 #include "Support/DisjointSets.h"
 #include "Surface/SurfacePreparation.h"
+#include "Voronoi/DelaunayCells.h"
 #include "Voronoi/MedialComplexCleanup.h"
+#include "Voronoi/ThinPartRepair.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -409,6 +411,81 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   {
     result.AmbiguousInsideTests += a;
   }
+
+  // 2b. A thin part sampled more sparsely than its thickness has Delaunay
+  // cells spanning it from one side to the other (sites facing away from
+  // each other across the solid) whose circumcentres lie far outside: a cell
+  // with three sites on one side and one on the other is nearly flat.
+  // Dropping them leaves holes in the part's medial sheet (paper 000, Fig.
+  // 19). Such a cell stays, its vertex moved to the mean of the midpoints of
+  // its facing pairs (on the part's mid-surface), its radius the distance to
+  // the surface there.
+  std::vector<char> spanning(nc, 0);
+  if (options.RepairThinParts)
+  {
+    std::vector<Point3> repairedCentre(nc);
+    constexpr double facingCosine = -0.5;                     // normals more than 120 degrees apart
+    const double thinLimit2 = std::pow(0.5 * smallRadius, 2); // two sample spacings
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 1024),
+      [&](const tbb::blocked_range<std::size_t>& r)
+      {
+        for (std::size_t c = r.begin(); c != r.end(); ++c)
+        {
+          if (inside[c])
+          {
+            continue;
+          }
+          // Facing pairs must face each other through the solid: no surface
+          // between them, and the middle of them all inside.
+          Point3 sum{ 0.0, 0.0, 0.0 };
+          int pairs = 0;
+          bool through = true;
+          for (int i = 0; through && i < 4; ++i)
+          {
+            for (int j = i + 1; through && j < 4; ++j)
+            {
+              const Index a = cellSites[c][i], b = cellSites[c][j];
+              if (Dot(normal[a], normal[b]) < facingCosine)
+              {
+                // Parts thicker than two spacings are sampled finely enough.
+                const Point3 ab = sites[b] - sites[a];
+                through = Dot(ab, ab) <= thinLimit2 &&
+                  !queries.Crosses(sites[a] + 1e-6 * ab, sites[b] - 1e-6 * ab);
+                sum = sum + 0.5 * (sites[a] + sites[b]);
+                ++pairs;
+              }
+            }
+          }
+          if (pairs == 0 || !through)
+          {
+            continue;
+          }
+          // Halfway to the cell's centroid: two cells with the same facing
+          // pairs would otherwise get the same vertex.
+          const Point3 centroid = 0.25 *
+            (sites[cellSites[c][0]] + sites[cellSites[c][1]] + sites[cellSites[c][2]] +
+              sites[cellSites[c][3]]);
+          const Point3 middle = 0.5 * ((1.0 / pairs) * sum + centroid);
+          const Index s0 = cellSites[c][0];
+          through = queries.InsideByPseudoNormal(middle, sites[s0], siteTriangle[s0]);
+          if (through)
+          {
+            spanning[c] = 1;
+            repairedCentre[c] = middle;
+          }
+        }
+      });
+    KeepSpanningCellsThatAddNoLoopOrVoid(cellSites, cellNeighbours, sites.size(), inside, spanning);
+    for (std::size_t c = 0; c < nc; ++c)
+    {
+      if (spanning[c])
+      {
+        inside[c] = 1;
+        centre[c] = repairedCentre[c];
+        ++result.SpanningCells;
+      }
+    }
+  }
   if (!report(0.7))
   {
     return abort();
@@ -444,6 +521,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   std::vector<std::vector<Index>> atlas;
   std::vector<Point3> centreSum;
   std::vector<int> groupSize;
+  std::vector<char> spanningGroup;
   for (std::size_t c = 0; c < nc; ++c)
   {
     if (!inside[c])
@@ -458,11 +536,13 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       atlas.emplace_back();
       centreSum.push_back({ 0.0, 0.0, 0.0 });
       groupSize.push_back(0);
+      spanningGroup.push_back(0);
     }
     const Index v = vertexOf[root];
     vertexOf[c] = v;
     centreSum[v] = centreSum[v] + centre[c];
     ++groupSize[v];
+    spanningGroup[v] = spanningGroup[v] || spanning[c];
     atlas[v].insert(atlas[v].end(), cellSites[c].begin(), cellSites[c].end());
   }
   const std::size_t nv = atlas.size();
@@ -480,7 +560,10 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
     {
       radius += Norm(mesh.Centers[v] - sites[s]);
     }
-    mesh.Radii[v] = radius / static_cast<double>(atlas[v].size());
+    // A spanning cell's vertex is not equidistant from its sites: its ball
+    // is the largest inside the surface.
+    mesh.Radii[v] = spanningGroup[v] ? queries.Distance(mesh.Centers[v])
+                                     : radius / static_cast<double>(atlas[v].size());
     result.AtlasSites.insert(result.AtlasSites.end(), atlas[v].begin(), atlas[v].end());
     result.AtlasOffsets.push_back(static_cast<Index>(result.AtlasSites.size()));
   }
@@ -517,21 +600,6 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   std::vector<Index> polygons, polygon;
   // Each Delaunay edge is circulated once over the flat cell arrays: the
   // cells around it are marked (6 local edges per cell) as they are visited.
-  static constexpr int edgeEnds[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 },
-    { 2, 3 } };
-  auto localIndex = [&cellSites](Index c, Index site)
-  {
-    const auto& s = cellSites[c];
-    return s[0] == site ? 0 : (s[1] == site ? 1 : (s[2] == site ? 2 : 3));
-  };
-  auto localEdge = [](int i, int j)
-  {
-    if (i > j)
-    {
-      std::swap(i, j);
-    }
-    return i == 0 ? j - 1 : (i == 1 ? j + 1 : 5);
-  };
   std::vector<std::uint8_t> edgeDone(nc, 0);
   for (std::size_t start = 0; start < nc; ++start)
   {
@@ -561,14 +629,14 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       for (;;)
       {
         edgeDone[current] |= static_cast<std::uint8_t>(
-          1u << localEdge(localIndex(current, u), localIndex(current, v)));
+          1u << LocalEdge(LocalIndex(cellSites, current, u), LocalIndex(cellSites, current, v)));
         const Index vertex = vertexOf[current];
         if (polygon.empty() || polygon.back() != vertex)
         {
           polygon.push_back(vertex);
         }
-        const int exitLocal = localIndex(current, exitSite);
-        const int iu = localIndex(current, u), iv = localIndex(current, v);
+        const int exitLocal = LocalIndex(cellSites, current, exitSite);
+        const int iu = LocalIndex(cellSites, current, u), iv = LocalIndex(cellSites, current, v);
         const int keep = 6 - exitLocal - iu - iv; // the fourth local index
         const Index next = cellNeighbours[current][exitLocal];
         if (next < 0 || !inside[next])

@@ -25,6 +25,10 @@ struct VoronoiMedialAxisOptions
   /// alpha * |s1 - s2| / 2.
   bool ConcaveFiltering = true;
   double ConcaveFilterAlpha = 0.7;
+  /// Keep the Delaunay cells that span a thin part from one side to the
+  /// other although their circumcentres fall outside (see the .cxx), so that
+  /// the part's medial sheet has no holes (paper 000, Fig. 19).
+  bool RepairThinParts = true;
   /// Fraction in [0, 1]; returning false aborts (the result is then empty).
   std::function<bool(double)> Progress;
 };
@@ -48,6 +52,7 @@ struct VoronoiMedialAxisResult
   std::size_t WeldedCells = 0;          // cells merged into another's vertex
   std::size_t FilteredFaces = 0;        // triangles removed by Eq. 4 (by collapses)
   std::size_t DroppedPockets = 0;       // tiny disconnected pieces removed
+  std::size_t SpanningCells = 0;        // kept by RepairThinParts, their vertices moved inside
   bool Aborted = false;
 };
 

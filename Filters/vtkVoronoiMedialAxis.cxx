@@ -132,7 +132,8 @@ int vtkVoronoiMedialAxis::RequestData(
       { "InsideCells", result.InsideCells },
       { "AmbiguousInsideTests", result.AmbiguousInsideTests },
       { "WeldedCells", result.WeldedCells }, { "FilteredTriangles", result.FilteredFaces },
-      { "DroppedPockets", result.DroppedPockets }, { "SpanningCells", result.SpanningCells } })
+      { "DroppedPockets", result.DroppedPockets }, { "SpanningCells", result.SpanningCells },
+      { "OpenedVoids", result.OpenedVoids } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }

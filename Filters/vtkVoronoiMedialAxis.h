@@ -28,7 +28,10 @@
  * the Atlas of every vertex (its generating sites) as field data
  * `AtlasSites` / `AtlasOffsets` and point data `AtlasCount`; and field data
  * with counts (`DelaunayCells`, `InsideCells`, `AmbiguousInsideTests`,
- * `WeldedCells`, `FilteredTriangles`, `DroppedPockets`, `SpanningCells`).
+ * `WeldedCells`, `FilteredTriangles`, `DroppedPockets`, `SpanningCells`,
+ * `OpenedVoids`). A solid's medial axis encloses no void: where the Voronoi
+ * complex does (around a pocket of cells whose circumcentres fell
+ * outside), the face of least radius on the void's boundary is left out.
  */
 #ifndef vtkVoronoiMedialAxis_h
 #define vtkVoronoiMedialAxis_h

@@ -97,7 +97,6 @@ const std::map<std::string, std::string>& KnownTopologyExceptions()
   static const std::map<std::string, std::string> exceptions = {
     { "cheburashka.off", "thin ears" },
     { "dragon.obj", "thin claws, horns and teeth" },
-    { "elephant.off", "thin trunk and tail" },
   };
   return exceptions;
 }

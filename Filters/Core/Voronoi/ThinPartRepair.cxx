@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace medialaxis
 {
@@ -238,5 +239,84 @@ void KeepSpanningCellsThatAddNoLoopOrVoid(const CellArray& cellSites,
   const std::vector<Index> clusterOf =
     KeepSpanningClustersWithoutNewLoops(cellSites, cellNeighbours, inside, spanning);
   OpenNewVoids(cellSites, cellNeighbours, sites, inside, spanning, clusterOf);
+}
+
+std::vector<std::array<Index, 2>> FacesOpeningVoids(const CellArray& cellSites,
+  const CellArray& cellNeighbours, std::size_t sites, const std::vector<char>& inside,
+  const std::vector<double>& radius)
+{
+  auto kept = [&](Index c) { return c >= 0 && inside[c] != 0; };
+  const std::vector<char> enclosed = EnclosedSites(cellSites, cellNeighbours, sites, kept);
+  std::vector<std::array<Index, 2>> faces;
+  if (std::find(enclosed.begin(), enclosed.end(), 1) == enclosed.end())
+  {
+    return faces;
+  }
+  // The void each enclosed site is in: its sites joined across faces not in
+  // the complex (as EnclosedSites does), restricted to enclosed sites.
+  DisjointSets voids(sites);
+  for (std::size_t c = 0; c < cellSites.size(); ++c)
+  {
+    for (int e = 0; e < 6; ++e)
+    {
+      const Index u = cellSites[c][edgeEnds[e][0]], v = cellSites[c][edgeEnds[e][1]];
+      if (enclosed[u] && enclosed[v] && voids.Find(u) != voids.Find(v) &&
+        !AroundEdge(cellSites, cellNeighbours, static_cast<Index>(c), e, kept))
+      {
+        voids.Union(u, v);
+      }
+    }
+  }
+  // Per void, the boundary face (one enclosed site, one not) of least
+  // mean radius; ties to the lower site pair.
+  struct Best
+  {
+    double Radius = HUGE_VAL;
+    std::array<Index, 2> Face{ -1, -1 };
+  };
+  std::vector<Best> best(sites);
+  for (std::size_t c = 0; c < cellSites.size(); ++c)
+  {
+    if (!inside[c])
+    {
+      continue;
+    }
+    for (int e = 0; e < 6; ++e)
+    {
+      Index u = cellSites[c][edgeEnds[e][0]], v = cellSites[c][edgeEnds[e][1]];
+      if (enclosed[u] == enclosed[v])
+      {
+        continue;
+      }
+      double sum = 0.0;
+      int count = 0;
+      if (!AroundEdge(cellSites, cellNeighbours, static_cast<Index>(c), e,
+            [&](Index n)
+            {
+              sum += kept(n) ? radius[n] : 0.0;
+              ++count;
+              return kept(n);
+            }))
+      {
+        continue;
+      }
+      const Index root = voids.Find(enclosed[u] ? u : v);
+      const std::array<Index, 2> face{ std::min(u, v), std::max(u, v) };
+      const double mean = sum / count;
+      if (mean < best[root].Radius || (mean == best[root].Radius && face < best[root].Face))
+      {
+        best[root] = { mean, face };
+      }
+    }
+  }
+  for (const Best& b : best)
+  {
+    if (b.Face[0] >= 0)
+    {
+      faces.push_back(b.Face);
+    }
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
 }
 }

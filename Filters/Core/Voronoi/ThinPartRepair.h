@@ -9,6 +9,7 @@
 
 #include "Voronoi/DelaunayCells.h"
 
+#include <array>
 #include <vector>
 
 namespace medialaxis
@@ -19,6 +20,14 @@ namespace medialaxis
 void KeepSpanningCellsThatAddNoLoopOrVoid(const CellArray& cellSites,
   const CellArray& cellNeighbours, std::size_t sites, const std::vector<char>& inside,
   std::vector<char>& spanning);
+
+/// The Voronoi faces (as sorted site pairs) to leave out so that the
+/// complex of the `inside` cells encloses no void: for each void, the face
+/// on its boundary whose cells have the smallest mean `radius` (the least
+/// medial one). Sorted.
+std::vector<std::array<Index, 2>> FacesOpeningVoids(const CellArray& cellSites,
+  const CellArray& cellNeighbours, std::size_t sites, const std::vector<char>& inside,
+  const std::vector<double>& radius);
 }
 
 #endif

@@ -486,6 +486,19 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       }
     }
   }
+  // 2c. A solid's medial axis encloses no void, but the Voronoi complex can,
+  // around a pocket of cells whose circumcentres fell outside. One face on
+  // each void's boundary is left out, which opens it and changes nothing else.
+  std::vector<std::array<Index, 2>> voidFaces;
+  {
+    std::vector<double> radius(nc);
+    for (std::size_t c = 0; c < nc; ++c)
+    {
+      radius[c] = Norm(centre[c] - sites[cellSites[c][0]]);
+    }
+    voidFaces = FacesOpeningVoids(cellSites, cellNeighbours, sites.size(), inside, radius);
+    result.OpenedVoids = voidFaces.size();
+  }
   if (!report(0.7))
   {
     return abort();
@@ -669,7 +682,12 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       {
         std::reverse(polygon.begin() + 1, polygon.end());
       }
-      complete.push_back({ { std::min(u, v), std::max(u, v) }, polygons.size(), polygon.size() });
+      const std::array<Index, 2> key{ std::min(u, v), std::max(u, v) };
+      if (std::binary_search(voidFaces.begin(), voidFaces.end(), key))
+      {
+        continue;
+      }
+      complete.push_back({ key, polygons.size(), polygon.size() });
       polygons.insert(polygons.end(), polygon.begin(), polygon.end());
     }
   }

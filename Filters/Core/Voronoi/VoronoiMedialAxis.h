@@ -53,6 +53,7 @@ struct VoronoiMedialAxisResult
   std::size_t FilteredFaces = 0;        // triangles removed by Eq. 4 (by collapses)
   std::size_t DroppedPockets = 0;       // tiny disconnected pieces removed
   std::size_t SpanningCells = 0;        // kept by RepairThinParts, their vertices moved inside
+  std::size_t OpenedVoids = 0;          // voids of the Voronoi complex opened by leaving out a face
   bool Aborted = false;
 };
 

@@ -3,7 +3,7 @@
 //
 //   medialaxis-benchmark [--samples N] [--target V] [--cad] [--threads T] [--scaling]
 //                        [--counts N1,N2,...] [--envelope] [--error-samples S]
-//                        [--envelope-samples E] [--delaunay]
+//                        [--envelope-samples E] [--delaunay] [--adaptive]
 //                        [--shape torus|box|...] [--resolution R] mesh...
 //
 // Memory: the process's resident peak during each stage, and in brackets
@@ -19,6 +19,8 @@
 // vtkSlabReconstructor, poly data included) and "error" (reconstruction
 // error with S surface samples, default 100,000, and E envelope samples,
 // default the library's, 50,000).
+// --adaptive samples thin parts densely (SamplingOptions::Adaptive); the
+// sampling stage then includes the thickness rays.
 // --delaunay also times CGAL's Delaunay triangulation of the same samples
 // alone (outside the stages: the least a Voronoi-based MAT pays).
 // The heap is tuned (HeapTuning.h) unless MEDIALAXIS_TUNE_HEAP=0; the
@@ -153,6 +155,7 @@ bool LoadSurface(
 std::size_t TopologyGuard = AtlasSimplifierOptions().TopologyGuardVertexCount;
 bool Envelope = false;
 bool DelaunayBaseline = false;
+bool AdaptiveSampling = false;
 std::size_t ErrorSamples = 100000;
 std::size_t EnvelopeSamples = ReconstructionErrorOptions().NumberOfEnvelopeSamples;
 
@@ -205,6 +208,7 @@ std::vector<Stage> RunPipeline(
   SurfaceSamples sites;
   SamplingOptions sampling;
   sampling.NumberOfSamples = samples;
+  sampling.Adaptive = AdaptiveSampling;
   stages.push_back(Measure("sampling", [&] { sites = SampleSurface(mesh, sampling); }));
   if (DelaunayBaseline)
   {
@@ -307,6 +311,8 @@ int main(int argc, char* argv[])
       Envelope = true;
     else if (arg == "--delaunay")
       DelaunayBaseline = true;
+    else if (arg == "--adaptive")
+      AdaptiveSampling = true;
     else if (arg == "--error-samples" && i + 1 < argc)
       ErrorSamples = std::stoul(argv[++i]);
     else if (arg == "--envelope-samples" && i + 1 < argc)
@@ -330,7 +336,7 @@ int main(int argc, char* argv[])
       std::cout << "usage: " << argv[0]
                 << " [--samples N] [--target V] [--cad] [--threads T] [--scaling]"
                    " [--counts N1,N2,...] [--envelope] [--error-samples S]"
-                   " [--envelope-samples E] [--delaunay]"
+                   " [--envelope-samples E] [--delaunay] [--adaptive]"
                    " [--shape torus|sphere|box] [--resolution R] mesh...\n";
       return 0;
     }

@@ -44,11 +44,15 @@ def read_sources(mesh_dir):
     return table
 
 
+# Options passed to every run of the tool (--adaptive).
+EXTRA_ARGS = []
+
+
 def run_tool(tool, mesh, out_dir, samples, target, cad, error, threads, strategy="structural"):
     report = os.path.join(out_dir, "report.json")
     args = [tool, "--quiet", "--samples", str(samples), "--target", str(target),
             "--sharp" if cad else "--no-sharp", "--threads", str(threads), "--envelope",
-            "--strategy", strategy, "--report", report]
+            "--strategy", strategy, "--report", report] + EXTRA_ARGS
     if error:
         args.append("--error")
     result = subprocess.run(args + [mesh, out_dir], capture_output=True, text=True)
@@ -98,7 +102,8 @@ def scaling(args, benchmark, mesh):
     sizes = [2000, 4000] if args.quick else [10000, 25000, 50000, 100000, 200000]
     rows = []
     for n in sizes:
-        result = subprocess.run([benchmark, "--samples", str(n), "--target", str(n // 10), mesh],
+        result = subprocess.run([benchmark, "--samples", str(n), "--target", str(n // 10), mesh]
+                                + EXTRA_ARGS,
                                 capture_output=True, text=True, check=True)
         line = [l for l in result.stdout.splitlines() if " samples |" in l][-1]
         stages = {m.group(1): {"seconds": float(m.group(2)), "peak_mb": float(m.group(3))}
@@ -267,7 +272,11 @@ def main():
                         help="build folder with bin/medial-axis and bin/medialaxis-benchmark")
     parser.add_argument("--meshes", default=os.path.join(ROOT, "..", "shared", "data", "meshes"))
     parser.add_argument("--threads", type=int, default=0)
+    parser.add_argument("--adaptive", action="store_true",
+                        help="sample thin parts densely (medial-axis --adaptive)")
     args = parser.parse_args()
+    if args.adaptive:
+        EXTRA_ARGS.append("--adaptive")
     tool = os.path.join(args.build, "bin", "medial-axis")
     benchmark = os.path.join(args.build, "bin", "medialaxis-benchmark")
     for program in (tool, benchmark):

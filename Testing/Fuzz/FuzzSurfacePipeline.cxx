@@ -7,7 +7,8 @@
 // Input layout (see DecodeMesh): flags, point count, points, triangle count,
 // triangles. Points are 16-bit grid coordinates (exact, so that closed seed
 // meshes stay closed under mutation), or raw doubles when flag bit 0 is set
-// (NaN, infinities, 1e300 and denormals).
+// (NaN, infinities, 1e300 and denormals). Flag bit 1: CAD mode; bit 2: keep
+// the orientation; bit 3: adaptive sampling.
 #include "Mesh/MedialMesh.h"
 #include "Sampling/BlueNoiseSampler.h"
 #include "Simplification/AtlasSimplifier.h"
@@ -124,12 +125,18 @@ bool Finite(const Point3& p)
     }                                                                                              \
   } while (false)
 
-void RunPipeline(const TriangleMesh& surface, bool cad)
+void RunPipeline(const TriangleMesh& surface, bool cad, bool adaptive)
 {
   SamplingOptions sampling;
   sampling.NumberOfSamples = 200;
+  sampling.Adaptive = adaptive;
   const SurfaceSamples sites = SampleSurface(surface, sampling);
   Check(sites.Points.size() == sampling.NumberOfSamples);
+  Check(sites.Spacing.size() == (adaptive ? sites.Points.size() : 0));
+  for (double h : sites.Spacing)
+  {
+    Check(h > 0.0 && std::isfinite(h));
+  }
   for (std::size_t i = 0; i < sites.Points.size(); ++i)
   {
     Check(Finite(sites.Points[i]));
@@ -191,6 +198,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // One thread: the fuzzer's inputs are tiny and results are thread-count
   // independent anyway.
   tbb::task_arena arena(1);
-  arena.execute([&] { RunPipeline(surface, (flags & 2) != 0); });
+  arena.execute([&] { RunPipeline(surface, (flags & 2) != 0, (flags & 8) != 0); });
   return 0;
 }

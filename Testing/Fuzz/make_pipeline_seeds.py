@@ -62,6 +62,10 @@ SEEDS = {
     'cube_far_raw': encode(cube((1e6, 1e6, 1e6), 1.0), flags=1),
     'cube_tiny_raw': encode(cube(scale=1e-30), flags=1),
     'cube_huge_raw': encode(cube(scale=1e30), flags=3),
+    # Bit 3: adaptive sampling (thickness rays, sizing field).
+    'nested_cubes_adaptive': encode(append(cube(scale=8), cube((2, 2, 2), 4)), flags=8),
+    'cube_tiny_raw_adaptive': encode(cube(scale=1e-30), flags=9),
+    'cube_huge_raw_adaptive': encode(cube(scale=1e30), flags=11),
 }
 
 if __name__ == '__main__':

@@ -108,16 +108,11 @@ TEST(BlueNoiseSampler, SpacingOnUnitSphere)
 
 TEST(BlueNoiseSampler, SpacingOnRealMesh)
 {
-  const std::string path = std::string(MEDIALAXIS_MESH_DIR) + "/bunny.obj";
-  if (!std::ifstream(path).good())
+  TriangleMesh bunny;
+  if (!test::ReadSharedMesh("bunny.obj", bunny))
   {
     GTEST_SKIP() << "shared meshes not present";
   }
-  vtkNew<vtkSurfaceFileReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  TriangleMesh bunny;
-  ASSERT_TRUE(PrepareSurfaceMesh(reader->GetOutput(), bunny).Ok());
   const Spacing s = MeasureSpacing(Sample(bunny, 10000).Points, SurfaceArea(bunny));
   std::cout << "bunny: min/ideal " << s.MinOverIdeal << ", CV " << s.Variation << "\n";
   EXPECT_GE(s.MinOverIdeal, 0.6);

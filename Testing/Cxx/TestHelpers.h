@@ -20,7 +20,11 @@
 #include "vtkPolyData.h"
 #include "vtkRestrictedVoronoiDiagram.h"
 #include "vtkSmartPointer.h"
+#include "vtkSurfaceFileReader.h"
+#include "vtkSurfacePreparation.h"
 #include "vtkVoronoiMedialAxis.h"
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
@@ -84,6 +88,28 @@ inline TriangleMesh Append(const TriangleMesh& a, const TriangleMesh& b)
     m.Triangles.push_back({ t[0] + base, t[1] + base, t[2] + base });
   }
   return m;
+}
+
+/// Reads and prepares the shared mesh `name` (MEDIALAXIS_MESH_DIR) into
+/// `mesh`. False if the shared meshes are not there (the caller skips), and
+/// also, with a test failure, if the file is not a valid surface.
+inline bool ReadSharedMesh(const std::string& name, TriangleMesh& mesh)
+{
+  const std::string path = std::string(MEDIALAXIS_MESH_DIR) + "/" + name;
+  if (!std::ifstream(path).good())
+  {
+    return false;
+  }
+  vtkNew<vtkSurfaceFileReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  const SurfacePreparationReport report = PrepareSurfaceMesh(reader->GetOutput(), mesh);
+  if (!report.Ok())
+  {
+    ADD_FAILURE() << name << ": " << report.Error;
+    return false;
+  }
+  return true;
 }
 
 inline vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh)

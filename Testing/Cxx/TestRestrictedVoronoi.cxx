@@ -172,16 +172,11 @@ TEST(RestrictedVoronoi, BruteForceCellsOnSmallMeshes)
 
 TEST(RestrictedVoronoi, RealMeshAreaAndCells)
 {
-  const std::string path = std::string(MEDIALAXIS_MESH_DIR) + "/fandisk.off";
-  if (!std::ifstream(path).good())
+  TriangleMesh mesh;
+  if (!test::ReadSharedMesh("fandisk.off", mesh))
   {
     GTEST_SKIP() << "shared meshes not present";
   }
-  vtkNew<vtkSurfaceFileReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  TriangleMesh mesh;
-  ASSERT_TRUE(PrepareSurfaceMesh(reader->GetOutput(), mesh).Ok());
   const std::vector<Point3> sites = SitesOn(mesh, 2000);
   const RestrictedVoronoiDiagram rvd = ComputeRestrictedVoronoi(mesh, sites);
   EXPECT_LT(RelativeAreaError(rvd, mesh), 1e-9);

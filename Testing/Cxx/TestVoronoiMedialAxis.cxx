@@ -349,16 +349,11 @@ TEST(VoronoiMedialAxis, ThinPartRepairAddsNoLoops)
   // A CAD part (genus 0) with thin walls: some spanning cells would bridge
   // two walls and make a loop; those clusters are left out, the others
   // close holes.
-  const std::string path = std::string(MEDIALAXIS_MESH_DIR) + "/abc_00000077.obj";
-  if (!std::ifstream(path).good())
+  TriangleMesh part;
+  if (!test::ReadSharedMesh("abc_00000077.obj", part))
   {
     GTEST_SKIP() << "shared meshes not present";
   }
-  vtkNew<vtkSurfaceFileReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  TriangleMesh part;
-  ASSERT_TRUE(PrepareSurfaceMesh(reader->GetOutput(), part).Ok());
   const Pipeline p = RunPipeline(part, 50000);
   std::cout << p.Mat.SpanningCells << " spanning cells kept\n";
   EXPECT_GT(p.Mat.SpanningCells, 0u);

@@ -341,8 +341,9 @@ SurfaceSamples SampleSurface(const TriangleMesh& surface, const SamplingOptions&
       {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
         {
-          samples.LocalThickness[i] = field->Thickness(samples.Points[i]);
-          samples.Spacing[i] = field->Spacing(samples.Points[i]);
+          const std::size_t probe = field->NearestProbe(samples.Points[i]);
+          samples.LocalThickness[i] = field->Thickness(probe);
+          samples.Spacing[i] = field->Spacing(probe);
         }
       });
   }

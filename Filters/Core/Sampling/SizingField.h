@@ -48,11 +48,15 @@ public:
   /// part is thin, larger otherwise).
   double ThickSpacing() const { return this->Coarsest; }
 
-  /// The wanted nearest-neighbour spacing at p (of the nearest probe).
-  double Spacing(const Point3& p) const { return this->ProbeSpacing[this->Tree->Nearest(p)]; }
-  /// The local thickness at p (of the nearest probe), at most
-  /// ThicknessLimit(); infinity if no ray found the far side.
-  double Thickness(const Point3& p) const { return this->ProbeThickness[this->Tree->Nearest(p)]; }
+  /// The probe nearest to p, whose values stand for p's.
+  std::size_t NearestProbe(const Point3& p) const { return this->Tree->Nearest(p); }
+  /// The wanted nearest-neighbour spacing at probe i.
+  double Spacing(std::size_t i) const { return this->ProbeSpacing[i]; }
+  /// The local thickness at probe i, at most ThicknessLimit(); infinity if
+  /// no ray found the far side.
+  double Thickness(std::size_t i) const { return this->ProbeThickness[i]; }
+  /// The wanted spacing at p (of the nearest probe).
+  double Spacing(const Point3& p) const { return this->Spacing(this->NearestProbe(p)); }
   /// The thickness from which the spacing no longer depends on it: the rays
   /// are not followed further.
   double ThicknessLimit() const { return this->ThickEnough; }

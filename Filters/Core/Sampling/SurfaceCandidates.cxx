@@ -23,13 +23,11 @@ double TriangleArea(const TriangleMesh& surface, const Triangle& tri)
   return 0.5 * Norm(Cross(surface.Points[tri[1]] - a, surface.Points[tri[2]] - a));
 }
 
-// The triangle whose cumulative range holds u in [0, total), never one of
-// zero weight.
+// The triangle whose cumulative range holds u in [0, 1) (PickFromCdf),
+// moved back past any of zero weight.
 std::size_t PickTriangle(const std::vector<double>& cumulative, double u)
 {
-  std::size_t t = static_cast<std::size_t>(
-    std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin());
-  t = std::min(t, cumulative.size() - 1);
+  std::size_t t = PickFromCdf(cumulative, u);
   while (t > 0 && cumulative[t] == cumulative[t - 1])
   {
     --t;
@@ -54,7 +52,7 @@ Candidates UniformCandidates(const TriangleMesh& surface, std::size_t count, std
   Random random(seed);
   for (std::size_t i = 0; i < count; ++i)
   {
-    const std::size_t t = PickTriangle(cumulative, random.Uniform() * total);
+    const std::size_t t = PickTriangle(cumulative, random.Uniform());
     const Triangle& tri = surface.Triangles[t];
     const double r1 = random.Uniform(), r2 = random.Uniform(); // drawn in this order
     candidates.Points[i] = PointInTriangle(
@@ -110,7 +108,7 @@ Candidates AdaptiveCandidates(
   Random random(seed);
   while (candidates.Points.size() < count)
   {
-    const std::size_t t = PickTriangle(cumulative, random.Uniform() * total);
+    const std::size_t t = PickTriangle(cumulative, random.Uniform());
     const Triangle& tri = surface.Triangles[t];
     const double r1 = random.Uniform(), r2 = random.Uniform(), keep = random.Uniform();
     const Point3 p = PointInTriangle(

@@ -91,6 +91,9 @@ Options:
                         curve or a point)
   --spike-collapses     the same for spike edges only: removes most spike
                         triangles of organic shapes
+  --fit, --no-fit       after simplification, fit the spheres' centres and
+                        radii to the surface, connectivity fixed (default:
+                        on; structural strategy only)
   --seed S              sampler seed; same seed, same result (default 0)
   --threads T           threads for the parallel stages (0 = all, default)
   --envelope            also write envelope.vtp: the union of the medial
@@ -136,7 +139,7 @@ struct Options
   int Sharp = -1; // -1: from the preset
   bool Adaptive = false;
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
-       Fillets = false, SpikeCollapses = false, QMat = false;
+       Fillets = false, SpikeCollapses = false, QMat = false, FinalFit = true;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;
@@ -294,6 +297,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--spike-collapses")
     {
       o.SpikeCollapses = true;
+    }
+    else if (arg == "--fit" || arg == "--no-fit")
+    {
+      o.FinalFit = arg == "--fit";
     }
     else if (arg == "--fillets")
     {
@@ -523,6 +530,7 @@ int main(int argc, char** argv)
   structural->SetFeatureNormalFiltering(o.FeatureNormalFiltering);
   structural->SetFringeCollapses(o.FringeCollapses);
   structural->SetEulerNeutralSpikeCollapses(o.SpikeCollapses);
+  structural->SetFinalFit(o.FinalFit);
   structural->SetStrategy(
     o.QMat ? vtkStructuralMedialAxis::QMat : vtkStructuralMedialAxis::Structural);
   structural->SetRandomSeed(o.Seed);
@@ -686,6 +694,7 @@ int main(int argc, char** argv)
                                                                                 : "\"off\"")
          << ", \"euler_neutral_spike_collapses\": "
          << (structural->GetEulerNeutralSpikeCollapses() ? "true" : "false")
+         << ", \"final_fit\": " << (structural->GetFinalFit() ? "true" : "false")
          << ", \"strategy\": " << (o.QMat ? "\"qmat\"" : "\"structural\"")
          << ", \"seed\": " << o.Seed << ", \"threads\": " << o.Threads << "},\n  \"seconds\": {";
     const char* stages[] = { "Sampling", "RestrictedVoronoi", "VoronoiMedialAxis", "Simplification",

@@ -45,6 +45,7 @@ std::string ReadRvd(vtkPolyData* input, medialaxis::RestrictedVoronoiDiagram& rv
 {
   vtkDataArray* positions = input->GetFieldData()->GetArray("SitePositions");
   vtkDataArray* siteIds = input->GetCellData()->GetArray("SiteId");
+  vtkDataArray* triangleIds = input->GetCellData()->GetArray("TriangleId"); // optional
   if (!positions || positions->GetNumberOfComponents() != 3 || !siteIds)
   {
     return "input port 1 must be the restricted Voronoi diagram (output 0 of "
@@ -96,6 +97,11 @@ std::string ReadRvd(vtkPolyData* input, medialaxis::RestrictedVoronoiDiagram& rv
     }
     rvd.Offsets.push_back(static_cast<medialaxis::Index>(rvd.Vertices.size()));
     rvd.PolygonSite.push_back(site);
+    if (triangleIds)
+    {
+      rvd.PolygonTriangle.push_back(
+        static_cast<medialaxis::Index>(triangleIds->GetComponent(cell, 0)));
+    }
   }
   return std::string();
 }
@@ -161,6 +167,8 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
     : this->FringeCollapses == FringeOff                      ? medialaxis::FringeCollapseMode::Off
                                          : medialaxis::FringeCollapseMode::Automatic;
   options.EulerNeutralSpikeCollapses = this->EulerNeutralSpikeCollapses;
+  options.FinalFit = this->FinalFit;
+  options.FitIterations = this->FitIterations;
   options.Progress = [this](double f)
   {
     this->UpdateProgress(0.05 + 0.9 * f);
@@ -194,13 +202,17 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
       { "SnappedVertices", result.SnappedVertices }, { "ForcedSnaps", result.ForcedSnaps },
       { "FoldingAllowedCollapses", result.FoldingAllowedCollapses },
       { "FoldRepairCollapses", result.FoldRepairCollapses }, { "CollapseBatches", result.Batches },
-      { "FringeCollapsesUsed", medialaxis::UsesFringeCollapses(options) ? 1u : 0u } })
+      { "FringeCollapsesUsed", medialaxis::UsesFringeCollapses(options) ? 1u : 0u },
+      { "FitRounds", static_cast<std::size_t>(result.Fit.AcceptedRounds) } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }
 
   medialaxis::AddFieldDouble(
     output, "QueueInitialisationSeconds", result.QueueInitialisationSeconds);
+  medialaxis::AddFieldDouble(output, "FitSeconds", result.FitSeconds);
+  medialaxis::AddFieldDouble(output, "FitRMSBefore", result.Fit.InitialRms);
+  medialaxis::AddFieldDouble(output, "FitRMSAfter", result.Fit.FinalRms);
 
   medialaxis::AddCorrespondence(rvdIn, m.AtlasOffsets, m.AtlasSites, sites.size(), rvdOut);
   this->UpdateProgress(1.0);
@@ -222,4 +234,6 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PreventFolds: " << this->PreventFolds << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
+  os << indent << "FinalFit: " << this->FinalFit << "\n";
+  os << indent << "FitIterations: " << this->FitIterations << "\n";
 }

@@ -281,6 +281,7 @@ int vtkStructuralMedialAxis::RequestData(
   simplifier->SetPreserveSharpFeatures(this->PreserveSharpFeatures);
   simplifier->SetFringeCollapses(this->FringeCollapses);
   simplifier->SetEulerNeutralSpikeCollapses(this->EulerNeutralSpikeCollapses);
+  simplifier->SetFinalFit(this->FinalFit);
   simplifier->SetLambda(this->Lambda);
   simplifier->SetSpikeThreshold(this->SpikeThreshold);
   vtkNew<vtkQMatSimplifier> qmat;
@@ -402,6 +403,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
+  os << indent << "FinalFit: " << this->FinalFit << "\n";
   os << indent << "Strategy: " << (this->Strategy == QMat ? "QMat" : "Structural") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "FeatureNormalFiltering: " << this->FeatureNormalFiltering << "\n";

@@ -142,6 +142,14 @@ public:
   ///@}
 
   ///@{
+  /// Fit the spheres to the surface after the last collapse (default on; see
+  /// vtkAtlasMedialAxisSimplifier::FinalFit). Structural strategy only.
+  vtkSetMacro(FinalFit, bool);
+  vtkGetMacro(FinalFit, bool);
+  vtkBooleanMacro(FinalFit, bool);
+  ///@}
+
+  ///@{
   /// Simplification strategy: Structural (default, the Atlas-guided energy
   /// of Structural MAT) or QMat (Q-MAT's slab quadric error on the same
   /// initial medial mesh, for comparison; sharp-feature snapping, Lambda and
@@ -200,6 +208,7 @@ protected:
   bool PreserveSharpFeatures = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   bool EulerNeutralSpikeCollapses = false;
+  bool FinalFit = true;
   int Strategy = Structural;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;

@@ -269,3 +269,40 @@ TEST(StructuralMedialAxis, ConcurrentPipelinesGiveTheResultsOfRunningAlone)
     EXPECT_TRUE(concurrentBox == box) << round;
   }
 }
+
+// FinalFit reaches the simplifier: its rounds and distances travel as field
+// data; off, the spheres stay where the collapses put them.
+TEST(StructuralMedialAxis, FinalFitSwitch)
+{
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToTorus();
+  shape->SetResolution(24);
+  auto run = [&](bool fit)
+  {
+    vtkNew<vtkStructuralMedialAxis> filter;
+    filter->SetInputConnection(shape->GetOutputPort());
+    filter->SetNumberOfSamples(3000);
+    filter->SetTargetNumberOfVertices(300);
+    filter->SetFinalFit(fit);
+    filter->Update();
+    vtkSmartPointer<vtkPolyData> mat = filter->GetOutput(0);
+    return mat;
+  };
+  vtkNew<vtkStructuralMedialAxis> defaults;
+  EXPECT_TRUE(defaults->GetFinalFit());
+  const vtkSmartPointer<vtkPolyData> fitted = run(true), plain = run(false);
+  EXPECT_GT(test::FieldValue(fitted, "FitRounds"), 0.0);
+  EXPECT_LT(test::FieldValue(fitted, "FitRMSAfter"), test::FieldValue(fitted, "FitRMSBefore"));
+  EXPECT_EQ(test::FieldValue(plain, "FitRounds"), 0.0);
+  EXPECT_EQ(test::FieldValue(plain, "FitRMSAfter"), 0.0);
+  ASSERT_EQ(fitted->GetNumberOfPoints(), plain->GetNumberOfPoints());
+  bool moved = false;
+  for (vtkIdType i = 0; i < plain->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    plain->GetPoint(i, a);
+    fitted->GetPoint(i, b);
+    moved = moved || a[0] != b[0] || a[1] != b[1] || a[2] != b[2];
+  }
+  EXPECT_TRUE(moved);
+}

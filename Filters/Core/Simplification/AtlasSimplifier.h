@@ -8,6 +8,7 @@
 #ifndef medialaxis_AtlasSimplifier_h
 #define medialaxis_AtlasSimplifier_h
 
+#include "Fitting/EnvelopeFit.h"
 #include "Mesh/MedialMesh.h"
 #include "Simplification/EdgeCollapseCounts.h"
 #include "Voronoi/RestrictedVoronoi.h"
@@ -96,6 +97,14 @@ struct AtlasSimplifierOptions
   /// checked there meanwhile (EdgeCollapseOptions::CheckAhead). The same
   /// result either way; off only to compare.
   bool CheckAhead = true;
+  /// After the last collapse, fit the spheres to the surface with the
+  /// connectivity fixed (Fitting/EnvelopeFit.h), through the sites and,
+  /// without PreserveSharpFeatures, the corners of their cells
+  /// (Fitting/FitPoints.h), in FitIterations rounds. With
+  /// PreserveSharpFeatures the feature vertices and the boundary of the
+  /// sheets (fillet centre lines) stay where the collapses left them.
+  bool FinalFit = true;
+  int FitIterations = 4;
   /// Fraction in [0, 1]; returning false aborts (the result is then empty).
   std::function<bool(double)> Progress;
 };
@@ -123,6 +132,9 @@ struct AtlasSimplifierResult : EdgeCollapseCounts
   /// Feature vertices snapped although that made a zero-area or folded
   /// triangle; the collapses around them go first to repair it.
   std::size_t ForcedSnaps = 0;
+  /// What the final fit did (all zero without it), and its time.
+  EnvelopeFitResult Fit;
+  double FitSeconds = 0.0;
 };
 
 /// `rvd`: the restricted Voronoi diagram whose sites the Atlases refer to

@@ -1,0 +1,654 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Fitting/EnvelopeFit.h"
+
+#include "Envelope/EnvelopeDistance.h"
+#include "Geometry/KdTree.h"
+#include "Geometry/Vec3.h"
+#include "Mesh/MedialMeshQuality.h"
+#include "Support/Parallel.h"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/Sparse>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace medialaxis
+{
+namespace
+{
+/// A surface point's signed distance F to the envelope, the outward normal
+/// at its nearest primitive's tangency point, and the spheres that
+/// primitive interpolates there with their weights.
+struct Correspondence
+{
+  double F = 0.0;
+  Point3 N{ 0, 0, 1 };
+  Index V[3] = { -1, -1, -1 };
+  double W[3] = { 0, 0, 0 };
+  int Count = 0;
+  std::uint32_t Warm = 0; // the nearest primitive, as MedialEnvelope's warm start
+};
+
+/// The weights w (w_0 = 1 - the others) with x = sum w_i (c_i + r_i n): the
+/// interpolated sphere that touches the tangency point x, by least squares
+/// over the primitive's spheres, clamped to the simplex.
+void InterpolationWeights(const MedialMesh& mesh, const Point3& x, Correspondence& c)
+{
+  if (c.Count == 1)
+  {
+    c.W[0] = 1.0;
+    return;
+  }
+  const auto touch = [&](int i)
+  {
+    const Index v = c.V[i];
+    return mesh.Centers[v] + mesh.Radii[v] * c.N;
+  };
+  const Point3 base = touch(0);
+  const Point3 target = x - base;
+  Point3 d[2];
+  for (int i = 1; i < c.Count; ++i)
+  {
+    d[i - 1] = touch(i) - base;
+  }
+  double w[2] = { 0.0, 0.0 };
+  if (c.Count == 2)
+  {
+    const double dd = Dot(d[0], d[0]);
+    w[0] = dd > 0.0 ? Dot(d[0], target) / dd : 0.5;
+  }
+  else
+  {
+    const double g11 = Dot(d[0], d[0]), g12 = Dot(d[0], d[1]), g22 = Dot(d[1], d[1]);
+    const double det = g11 * g22 - g12 * g12;
+    const double b1 = Dot(d[0], target), b2 = Dot(d[1], target);
+    if (det > 1e-14 * std::max(g11 * g22, 1e-300))
+    {
+      w[0] = (g22 * b1 - g12 * b2) / det;
+      w[1] = (g11 * b2 - g12 * b1) / det;
+    }
+    else
+    {
+      w[0] = w[1] = 1.0 / 3.0;
+    }
+  }
+  double sum = 0.0;
+  for (int i = 0; i < c.Count - 1; ++i)
+  {
+    w[i] = std::max(w[i], 0.0);
+    sum += w[i];
+  }
+  if (sum > 1.0)
+  {
+    for (int i = 0; i < c.Count - 1; ++i)
+    {
+      w[i] /= sum;
+    }
+    sum = 1.0;
+  }
+  c.W[0] = 1.0 - sum;
+  for (int i = 1; i < c.Count; ++i)
+  {
+    c.W[i] = w[i - 1];
+  }
+}
+
+/// Correspondences of every point with the envelope of `mesh`. Each search
+/// starts from the point's primitive in `previous` (the same connectivity, so
+/// the same primitives) or else from the last point's; fixed chunks (simple
+/// partitioner) keep the warm starts, and so any tie between primitives, the
+/// same at every thread count.
+void Measure(const MedialMesh& mesh, const std::vector<Point3>& points, int threads,
+  const std::vector<Correspondence>* previous, std::vector<Correspondence>& out)
+{
+  const MedialEnvelope envelope(mesh);
+  out.assign(points.size(), Correspondence());
+  RunWithThreads(threads,
+    [&]
+    {
+      tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, points.size(), 256),
+        [&](const tbb::blocked_range<std::size_t>& range)
+        {
+          std::uint32_t warm = MedialEnvelope::NoPrimitive;
+          for (std::size_t i = range.begin(); i != range.end(); ++i)
+          {
+            if (previous)
+            {
+              warm = (*previous)[i].Warm;
+            }
+            const MedialEnvelope::Nearest nearest = envelope.SignedDistance(points[i], &warm);
+            Correspondence& c = out[i];
+            c.Warm = warm;
+            c.F = nearest.Distance;
+            c.N = nearest.Normal;
+            c.Count = envelope.MedialVertices(nearest.Primitive, c.V);
+            InterpolationWeights(mesh, points[i] - c.F * c.N, c);
+          }
+        },
+        tbb::simple_partitioner());
+    });
+}
+
+double Objective(const std::vector<Correspondence>& corr, const std::vector<double>& weights)
+{
+  double sum = 0.0;
+  for (std::size_t i = 0; i < corr.size(); ++i)
+  {
+    const double w = weights.empty() ? 1.0 : weights[i];
+    sum += w * corr[i].F * corr[i].F;
+  }
+  return sum;
+}
+
+/// A sphere reaching out of the surface: G = r - |c - q| > 0 with q the
+/// nearest surface point, U = (c - q) / |c - q|.
+struct Overreach
+{
+  Index V;
+  double G;
+  Point3 U;
+};
+
+void MeasureOverreach(const MedialMesh& mesh, const KdTree& tree, const std::vector<Point3>& points,
+  const std::vector<Index>& unknown, std::vector<Overreach>& out)
+{
+  out.clear();
+  for (std::size_t v = 0; v < mesh.NumberOfVertices(); ++v)
+  {
+    if (unknown[v] < 0)
+    {
+      continue;
+    }
+    const Point3& c = mesh.Centers[v];
+    const Point3 d = c - points[tree.Nearest(c)];
+    const double length = Norm(d);
+    const double g = mesh.Radii[v] - length;
+    if (g > 0.0 && length > 0.0)
+    {
+      out.push_back({ static_cast<Index>(v), g, (1.0 / length) * d });
+    }
+  }
+}
+
+double OverreachObjective(const std::vector<Overreach>& over, double weight)
+{
+  double sum = 0.0;
+  for (const Overreach& o : over)
+  {
+    sum += weight * o.G * o.G;
+  }
+  return sum;
+}
+
+void Statistics(const std::vector<Correspondence>& corr, double& rms, double& maximum)
+{
+  double sum = 0.0;
+  maximum = 0.0;
+  for (const Correspondence& c : corr)
+  {
+    sum += c.F * c.F;
+    maximum = std::max(maximum, std::abs(c.F));
+  }
+  rms = corr.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(corr.size()));
+}
+
+/// The sparsity of the normal equations: per free vertex, itself and its
+/// free neighbours (sorted), in compressed rows.
+struct BlockPattern
+{
+  std::vector<Index> Unknown; // vertex -> free index, or -1
+  std::vector<Index> RowStart{ 0 };
+  std::vector<Index> Columns;
+
+  Index Find(Index row, Index column) const
+  {
+    const auto first = this->Columns.begin() + this->RowStart[row];
+    const auto last = this->Columns.begin() + this->RowStart[row + 1];
+    return static_cast<Index>(std::lower_bound(first, last, column) - this->Columns.begin());
+  }
+};
+
+BlockPattern MakePattern(const MedialMesh& mesh, const std::vector<std::array<Index, 2>>& edges,
+  const std::vector<std::uint8_t>& fixedVertex)
+{
+  BlockPattern pattern;
+  const std::size_t nv = mesh.NumberOfVertices();
+  pattern.Unknown.assign(nv, -1);
+  Index free = 0;
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    if (fixedVertex.empty() || !fixedVertex[v])
+    {
+      pattern.Unknown[v] = free++;
+    }
+  }
+  std::vector<std::vector<Index>> rows(static_cast<std::size_t>(free));
+  for (Index u = 0; u < free; ++u)
+  {
+    rows[u].push_back(u);
+  }
+  for (const auto& e : edges)
+  {
+    const Index a = pattern.Unknown[e[0]], b = pattern.Unknown[e[1]];
+    if (a >= 0 && b >= 0)
+    {
+      rows[a].push_back(b);
+      rows[b].push_back(a);
+    }
+  }
+  for (auto& row : rows)
+  {
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    pattern.Columns.insert(pattern.Columns.end(), row.begin(), row.end());
+    pattern.RowStart.push_back(static_cast<Index>(pattern.Columns.size()));
+  }
+  return pattern;
+}
+
+/// Per vertex: the largest move per round (StepLimit x mean edge length, or
+/// the radius for a vertex without edges).
+std::vector<double> StepLimits(
+  const MedialMesh& mesh, const std::vector<std::array<Index, 2>>& edges, double fraction)
+{
+  const std::size_t nv = mesh.NumberOfVertices();
+  std::vector<double> sum(nv, 0.0);
+  std::vector<int> count(nv, 0);
+  for (const auto& e : edges)
+  {
+    const double length = std::sqrt(Distance2(mesh.Centers[e[0]], mesh.Centers[e[1]]));
+    for (Index v : e)
+    {
+      sum[v] += length;
+      ++count[v];
+    }
+  }
+  std::vector<double> limit(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    limit[v] = fraction * (count[v] > 0 ? sum[v] / count[v] : mesh.Radii[v]);
+  }
+  return limit;
+}
+
+/// The two triangles (u, v, x) and (v, u, y) across every edge with exactly
+/// two triangles: where a fold can appear.
+struct Hinge
+{
+  Index U, V, X, Y;
+};
+
+std::vector<Hinge> MakeHinges(const MedialMesh& mesh)
+{
+  std::vector<std::array<Index, 3>> halfEdges; // (min, max, apex)
+  for (const auto& t : mesh.Faces)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index u = t[k], v = t[(k + 1) % 3];
+      halfEdges.push_back({ std::min(u, v), std::max(u, v), t[(k + 2) % 3] });
+    }
+  }
+  std::sort(halfEdges.begin(), halfEdges.end());
+  std::vector<Hinge> hinges;
+  for (std::size_t i = 0; i < halfEdges.size();)
+  {
+    std::size_t j = i;
+    while (j < halfEdges.size() && halfEdges[j][0] == halfEdges[i][0] &&
+      halfEdges[j][1] == halfEdges[i][1])
+    {
+      ++j;
+    }
+    if (j - i == 2)
+    {
+      hinges.push_back({ halfEdges[i][0], halfEdges[i][1], halfEdges[i][2], halfEdges[i + 1][2] });
+    }
+    i = j;
+  }
+  return hinges;
+}
+
+bool Degenerate(const MedialMesh& mesh, const std::array<Index, 3>& t)
+{
+  const Point3 &a = mesh.Centers[t[0]], &b = mesh.Centers[t[1]], &c = mesh.Centers[t[2]];
+  const double longest = std::max({ Distance2(a, b), Distance2(b, c), Distance2(c, a) });
+  return !(Norm(Cross(b - a, c - a)) > 1e-12 * longest);
+}
+
+bool Folded(const MedialMesh& mesh, const Hinge& h)
+{
+  const auto& c = mesh.Centers;
+  return IsFold(c[h.U], c[h.V], c[h.X], c[h.Y]);
+}
+
+/// What a move of the spheres must not create: degenerate triangles, folds
+/// and spike edges (stability ratio below the threshold), unless the mesh
+/// had them before the fit.
+class ValidityGuard
+{
+public:
+  ValidityGuard(
+    const MedialMesh& mesh, const std::vector<std::array<Index, 2>>& edges, double spikeThreshold)
+    : Edges(edges)
+    , Hinges(MakeHinges(mesh))
+    , SpikeThreshold(spikeThreshold)
+  {
+    for (const Hinge& h : this->Hinges)
+    {
+      this->FoldedBefore.push_back(Folded(mesh, h));
+    }
+    for (const auto& t : mesh.Faces)
+    {
+      this->DegenerateBefore.push_back(Degenerate(mesh, t));
+    }
+    for (const auto& e : edges)
+    {
+      this->SpikeBefore.push_back(this->Spike(mesh, e));
+    }
+  }
+
+  /// Shortens the moves from `current` to `candidate` of the spheres of
+  /// every element the move made invalid (halving them, at last putting the
+  /// sphere back) until none is left.
+  void Shorten(const MedialMesh& current, MedialMesh& candidate) const
+  {
+    const std::size_t nv = current.NumberOfVertices();
+    std::vector<double> share(nv, 1.0);
+    std::vector<Point3> moveC(nv);
+    std::vector<double> moveR(nv);
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      moveC[v] = candidate.Centers[v] - current.Centers[v];
+      moveR[v] = candidate.Radii[v] - current.Radii[v];
+    }
+    std::vector<Index> flagged;
+    const auto flag = [&](Index v)
+    {
+      if (share[v] > 0.0 && (moveR[v] != 0.0 || moveC[v] != Point3{ 0, 0, 0 }))
+      {
+        flagged.push_back(v);
+      }
+    };
+    for (;;)
+    {
+      flagged.clear();
+      for (std::size_t f = 0; f < candidate.Faces.size(); ++f)
+      {
+        const auto& t = candidate.Faces[f];
+        if (!this->DegenerateBefore[f] && Degenerate(candidate, t))
+        {
+          for (Index v : t)
+          {
+            flag(v);
+          }
+        }
+      }
+      for (std::size_t i = 0; i < this->Hinges.size(); ++i)
+      {
+        const Hinge& h = this->Hinges[i];
+        if (!this->FoldedBefore[i] && Folded(candidate, h))
+        {
+          for (Index v : { h.U, h.V, h.X, h.Y })
+          {
+            flag(v);
+          }
+        }
+      }
+      for (std::size_t i = 0; i < this->Edges.size(); ++i)
+      {
+        const auto& e = this->Edges[i];
+        if (!this->SpikeBefore[i] && this->Spike(candidate, e))
+        {
+          flag(e[0]);
+          flag(e[1]);
+        }
+      }
+      if (flagged.empty())
+      {
+        return;
+      }
+      std::sort(flagged.begin(), flagged.end());
+      flagged.erase(std::unique(flagged.begin(), flagged.end()), flagged.end());
+      for (Index v : flagged)
+      {
+        share[v] = share[v] > 1.0 / 8.0 ? 0.5 * share[v] : 0.0;
+        candidate.Centers[v] = current.Centers[v] + share[v] * moveC[v];
+        candidate.Radii[v] = current.Radii[v] + share[v] * moveR[v];
+      }
+    }
+  }
+
+private:
+  bool Spike(const MedialMesh& mesh, const std::array<Index, 2>& e) const
+  {
+    return StabilityRatio(mesh.Centers[e[0]], mesh.Radii[e[0]], mesh.Centers[e[1]],
+             mesh.Radii[e[1]]) < this->SpikeThreshold;
+  }
+
+  const std::vector<std::array<Index, 2>>& Edges;
+  std::vector<Hinge> Hinges;
+  double SpikeThreshold;
+  std::vector<std::uint8_t> FoldedBefore, DegenerateBefore, SpikeBefore;
+};
+
+/// The normal equations of sum w_i (F_i + J_i delta)^2: 4 x 4 blocks in the
+/// pattern's order, and the right-hand side -J^T W F.
+void Assemble(const std::vector<Correspondence>& corr, const std::vector<double>& weights,
+  const BlockPattern& pattern, std::vector<double>& blocks, Eigen::VectorXd& rhs)
+{
+  const Index free = static_cast<Index>(pattern.RowStart.size()) - 1;
+  blocks.assign(pattern.Columns.size() * 16, 0.0);
+  rhs = Eigen::VectorXd::Zero(4 * free);
+  for (std::size_t i = 0; i < corr.size(); ++i)
+  {
+    const Correspondence& c = corr[i];
+    const double a = weights.empty() ? 1.0 : weights[i];
+    // dF/d(c, r) of sphere s = -w_s (n, 1).
+    const double g[4] = { c.N[0], c.N[1], c.N[2], 1.0 };
+    for (int s = 0; s < c.Count; ++s)
+    {
+      const Index us = pattern.Unknown[c.V[s]];
+      if (us < 0)
+      {
+        continue;
+      }
+      for (int k = 0; k < 4; ++k)
+      {
+        rhs[4 * us + k] += a * c.F * c.W[s] * g[k];
+      }
+      for (int t = 0; t < c.Count; ++t)
+      {
+        const Index ut = pattern.Unknown[c.V[t]];
+        if (ut < 0)
+        {
+          continue;
+        }
+        double* block = &blocks[16 * pattern.Find(us, ut)];
+        const double ww = a * c.W[s] * c.W[t];
+        for (int k = 0; k < 4; ++k)
+        {
+          for (int l = 0; l < 4; ++l)
+          {
+            block[4 * k + l] += ww * g[k] * g[l];
+          }
+        }
+      }
+    }
+  }
+}
+
+/// Adds weight * G^2 per overreaching sphere, dG/d(c, r) = (-U, 1).
+void AssembleOverreach(const std::vector<Overreach>& over, double weight,
+  const BlockPattern& pattern, std::vector<double>& blocks, Eigen::VectorXd& rhs)
+{
+  for (const Overreach& o : over)
+  {
+    const Index u = pattern.Unknown[o.V];
+    const double g[4] = { -o.U[0], -o.U[1], -o.U[2], 1.0 };
+    double* block = &blocks[16 * pattern.Find(u, u)];
+    for (int k = 0; k < 4; ++k)
+    {
+      rhs[4 * u + k] -= weight * o.G * g[k];
+      for (int l = 0; l < 4; ++l)
+      {
+        block[4 * k + l] += weight * g[k] * g[l];
+      }
+    }
+  }
+}
+
+/// (A + damping (diag A + floor)) delta = rhs, approximately.
+bool Solve(const BlockPattern& pattern, const std::vector<double>& blocks,
+  const Eigen::VectorXd& rhs, double damping, double floor, Eigen::VectorXd& delta)
+{
+  const Index free = static_cast<Index>(pattern.RowStart.size()) - 1;
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(blocks.size());
+  for (Index u = 0; u < free; ++u)
+  {
+    for (Index j = pattern.RowStart[u]; j < pattern.RowStart[u + 1]; ++j)
+    {
+      const Index w = pattern.Columns[j];
+      const double* block = &blocks[16 * j];
+      for (int k = 0; k < 4; ++k)
+      {
+        for (int l = 0; l < 4; ++l)
+        {
+          double value = block[4 * k + l];
+          if (u == w && k == l)
+          {
+            value += damping * (value + floor);
+          }
+          if (value != 0.0)
+          {
+            triplets.emplace_back(static_cast<int>(4 * u + k), static_cast<int>(4 * w + l), value);
+          }
+        }
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> matrix(4 * free, 4 * free);
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  // Conjugate gradients: the damped system is well conditioned, and a
+  // Levenberg-Marquardt step needs no exact solve (a sparse Cholesky
+  // factorisation costs ten times more on 5,000 spheres).
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver;
+  solver.setMaxIterations(100);
+  solver.setTolerance(1e-6);
+  solver.compute(matrix);
+  if (solver.info() != Eigen::Success)
+  {
+    return false;
+  }
+  delta = solver.solve(rhs);
+  return delta.allFinite();
+}
+}
+
+EnvelopeFitResult FitMedialEnvelope(MedialMesh& mesh, const std::vector<Point3>& points,
+  const std::vector<double>& weights, const std::vector<std::uint8_t>& fixedVertex,
+  const EnvelopeFitOptions& options)
+{
+  EnvelopeFitResult result;
+  if (mesh.NumberOfVertices() == 0 || points.empty())
+  {
+    return result;
+  }
+  const std::vector<std::array<Index, 2>> edges = AllEdges(mesh);
+  const BlockPattern pattern = MakePattern(mesh, edges, fixedVertex);
+  const std::vector<double> limit = StepLimits(mesh, edges, options.StepLimit);
+  const Index free = static_cast<Index>(pattern.RowStart.size()) - 1;
+  const ValidityGuard guard(mesh, edges, options.SpikeThreshold);
+  std::vector<Correspondence> corr, trial;
+  Measure(mesh, points, options.NumberOfThreads, nullptr, corr);
+  const KdTree tree(points);
+  double totalWeight = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    totalWeight += weights.empty() ? 1.0 : weights[i];
+  }
+  const double overreachWeight =
+    options.OverreachWeight * totalWeight / static_cast<double>(mesh.NumberOfVertices());
+  std::vector<Overreach> over, trialOver;
+  MeasureOverreach(mesh, tree, points, pattern.Unknown, over);
+  double objective = Objective(corr, weights) + OverreachObjective(over, overreachWeight);
+  Statistics(corr, result.InitialRms, result.InitialMaximum);
+  double damping = options.Damping;
+  const double minimumDamping = 0.1 * damping;
+  // The normal equations at the current correspondences, rebuilt after each
+  // accepted round; a rejected round only raises the damping.
+  std::vector<double> blocks;
+  Eigen::VectorXd rhs;
+  double floor = 0.0;
+  bool assemble = true;
+  for (int round = 0; round < options.Iterations && free > 0; ++round)
+  {
+    if (options.Progress && !options.Progress(static_cast<double>(round) / options.Iterations))
+    {
+      result.Aborted = true;
+      break;
+    }
+    if (assemble)
+    {
+      Assemble(corr, weights, pattern, blocks, rhs);
+      AssembleOverreach(over, overreachWeight, pattern, blocks, rhs);
+      double diagonalSum = 0.0;
+      for (Index u = 0; u < free; ++u)
+      {
+        const double* block = &blocks[16 * pattern.Find(u, u)];
+        diagonalSum += block[0] + block[5] + block[10] + block[15];
+      }
+      floor = diagonalSum / static_cast<double>(4 * free) + 1e-300;
+      assemble = false;
+    }
+    Eigen::VectorXd delta;
+    if (!Solve(pattern, blocks, rhs, damping, floor, delta))
+    {
+      damping *= 10.0;
+      ++result.RejectedRounds;
+      continue;
+    }
+    MedialMesh candidate = mesh;
+    for (std::size_t v = 0; v < mesh.NumberOfVertices(); ++v)
+    {
+      const Index u = pattern.Unknown[v];
+      if (u < 0)
+      {
+        continue;
+      }
+      const Point3 dc{ delta[4 * u], delta[4 * u + 1], delta[4 * u + 2] };
+      const double dr = delta[4 * u + 3];
+      const double length = std::max(Norm(dc), std::abs(dr));
+      const double shrink = length > limit[v] ? limit[v] / length : 1.0;
+      candidate.Centers[v] = mesh.Centers[v] + shrink * dc;
+      candidate.Radii[v] = std::max(0.0, mesh.Radii[v] + shrink * dr);
+    }
+    guard.Shorten(mesh, candidate);
+    Measure(candidate, points, options.NumberOfThreads, &corr, trial);
+    MeasureOverreach(candidate, tree, points, pattern.Unknown, trialOver);
+    const double value = Objective(trial, weights) + OverreachObjective(trialOver, overreachWeight);
+    if (value < objective)
+    {
+      objective = value;
+      mesh = std::move(candidate);
+      corr.swap(trial);
+      over.swap(trialOver);
+      damping = std::max(damping / 3.0, minimumDamping);
+      assemble = true;
+      ++result.AcceptedRounds;
+    }
+    else
+    {
+      damping *= 4.0;
+      ++result.RejectedRounds;
+    }
+  }
+  Statistics(corr, result.FinalRms, result.FinalMaximum);
+  return result;
+}
+}

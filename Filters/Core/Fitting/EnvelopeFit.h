@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A final fit of a medial mesh to the surface it stands for: with the
+// connectivity fixed, the spheres' centres and radii are moved so that the
+// boundary of the envelope (the union of balls, cones and slabs) passes
+// through the surface points, by damped Gauss-Newton (Levenberg-Marquardt)
+// rounds over closest-primitive correspondences.
+//
+// Each surface point p gives the residual F(p), its signed distance to the
+// envelope (positive where the envelope falls short of the surface, negative
+// where it reaches past it); the objective is sum w F(p)^2 plus a penalty on
+// balls reaching out of the surface. The nearest primitive interpolates one, two or
+// three spheres with weights w_i at its tangency point, and the envelope
+// theorem gives dF/dc_i = -w_i n and dF/dr_i = -w_i (n the outward normal
+// there), so one round is a sparse linear solve over 4 unknowns per sphere.
+// Moves that would fold or flatten a triangle or make a spike edge are
+// shortened; a round is kept only when the objective falls, otherwise the
+// damping grows and the round is tried again.
+#ifndef medialaxis_EnvelopeFit_h
+#define medialaxis_EnvelopeFit_h
+
+#include "Mesh/MedialMesh.h"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace medialaxis
+{
+struct EnvelopeFitOptions
+{
+  /// Gauss-Newton rounds (each one rebuilds the envelope and measures every
+  /// point once).
+  int Iterations = 4;
+  /// Weight of the term that keeps each ball inside the surface, (r - |c -
+  /// q|)^2 where the ball reaches past its nearest point q, relative to the
+  /// mean surface area per sphere. Without it, balls that grow to reach
+  /// points on one side of a thin part poke out between points on the other.
+  double OverreachWeight = 1.0;
+  /// A sphere moves (centre and radius) by at most this fraction of the mean
+  /// length of its edges per round, so that correspondences stay valid.
+  double StepLimit = 0.5;
+  /// Initial Levenberg-Marquardt damping, relative to the diagonal plus its
+  /// mean (the mean keeps moves along the sheets, which change no distance,
+  /// small). It never falls below a tenth of this.
+  double Damping = 0.1;
+  /// No move may turn an edge into a spike: stability ratio (|c1 - c2| -
+  /// |r1 - r2|) / |c1 - c2| below this (the simplifier's threshold).
+  double SpikeThreshold = 0.025;
+  /// Threads for the distance queries (0 = all); the result does not
+  /// depend on it.
+  int NumberOfThreads = 0;
+  /// Fraction in [0, 1]; returning false stops the fit (the mesh is then
+  /// left as the last accepted round made it).
+  std::function<bool(double)> Progress;
+};
+
+struct EnvelopeFitResult
+{
+  /// Root mean square and largest |F| over the points, before and after.
+  double InitialRms = 0.0, FinalRms = 0.0;
+  double InitialMaximum = 0.0, FinalMaximum = 0.0;
+  int AcceptedRounds = 0;
+  int RejectedRounds = 0;
+  bool Aborted = false;
+};
+
+/// Moves the spheres of `mesh` (not those with fixedVertex[v] != 0; the
+/// vector may be empty) to fit `points` on the surface, each with a weight
+/// (the surface area it stands for; empty = all 1). Deterministic at any
+/// thread count.
+EnvelopeFitResult FitMedialEnvelope(MedialMesh& mesh, const std::vector<Point3>& points,
+  const std::vector<double>& weights, const std::vector<std::uint8_t>& fixedVertex,
+  const EnvelopeFitOptions& options = EnvelopeFitOptions());
+}
+
+#endif

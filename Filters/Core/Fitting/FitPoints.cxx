@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Fitting/FitPoints.h"
+
+#include "Geometry/MortonOrder.h"
+#include "Geometry/Vec3.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace medialaxis
+{
+namespace
+{
+/// The corners of the polygons [first, last) (one surface triangle) that
+/// three or more polygons share: equal to within `tolerance`, since each
+/// polygon is clipped on its own. Sorted by x, each corner is compared with
+/// those within the tolerance in x only (large triangles of CAD meshes hold
+/// thousands of polygons).
+void SharedCorners(const RestrictedVoronoiDiagram& rvd, const std::vector<double>& area,
+  std::size_t first, std::size_t last, double tolerance, WeightedPoints& out)
+{
+  std::vector<std::pair<Point3, Index>> corners; // position, site
+  for (std::size_t p = first; p < last; ++p)
+  {
+    for (Index k = rvd.Offsets[p]; k < rvd.Offsets[p + 1]; ++k)
+    {
+      corners.emplace_back(rvd.Vertices[k], rvd.PolygonSite[p]);
+    }
+  }
+  std::sort(corners.begin(), corners.end());
+  const double tolerance2 = tolerance * tolerance;
+  std::vector<char> taken(corners.size(), 0);
+  for (std::size_t i = 0; i < corners.size(); ++i)
+  {
+    if (taken[i])
+    {
+      continue;
+    }
+    Index cells[3] = { corners[i].second, -1, -1 };
+    int count = 1;
+    for (std::size_t j = i + 1;
+         j < corners.size() && corners[j].first[0] - corners[i].first[0] <= tolerance; ++j)
+    {
+      if (!taken[j] && Distance2(corners[i].first, corners[j].first) <= tolerance2)
+      {
+        taken[j] = 1;
+        if (count < 3 && corners[j].second != cells[0] && corners[j].second != cells[1])
+        {
+          cells[count++] = corners[j].second;
+        }
+      }
+    }
+    if (count == 3)
+    {
+      out.Points.push_back(corners[i].first);
+      out.Weights.push_back((area[cells[0]] + area[cells[1]] + area[cells[2]]) / 12.0);
+    }
+  }
+}
+}
+
+WeightedPoints FitPoints(
+  const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites, bool corners)
+{
+  std::vector<double> area(sites.size(), 0.0);
+  for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)
+  {
+    const Point3& a = rvd.Vertices[rvd.Offsets[p]];
+    for (Index k = rvd.Offsets[p] + 1; k + 1 < rvd.Offsets[p + 1]; ++k)
+    {
+      area[rvd.PolygonSite[p]] += 0.5 * Norm(Cross(rvd.Vertices[k] - a, rvd.Vertices[k + 1] - a));
+    }
+  }
+  WeightedPoints out;
+  out.Points = sites;
+  out.Weights.resize(sites.size());
+  for (std::size_t s = 0; s < sites.size(); ++s)
+  {
+    out.Weights[s] = 0.5 * area[s];
+  }
+  // Corners need the polygons' triangles (absent: the sites alone); the
+  // sites then stand for their whole cells.
+  if (!corners || rvd.Vertices.empty() || rvd.PolygonTriangle.size() != rvd.NumberOfPolygons())
+  {
+    for (double& w : out.Weights)
+    {
+      w *= 2.0;
+    }
+    return out;
+  }
+  const auto [lo, hi] = BoundingBox(rvd.Vertices);
+  const double tolerance = 1e-9 * std::sqrt(Distance2(lo, hi));
+  // Chunks of about 4,096 polygons that end at a triangle's last polygon,
+  // searched in parallel and joined in order (the same at any thread count).
+  std::vector<std::size_t> starts{ 0 };
+  const std::size_t np = rvd.NumberOfPolygons();
+  for (std::size_t p = 4096; p < np; p += 4096)
+  {
+    while (p < np && rvd.PolygonTriangle[p] == rvd.PolygonTriangle[p - 1])
+    {
+      ++p;
+    }
+    if (p < np && p > starts.back())
+    {
+      starts.push_back(p);
+    }
+  }
+  starts.push_back(np);
+  std::vector<WeightedPoints> chunks(starts.size() - 1);
+  tbb::parallel_for(std::size_t(0), chunks.size(),
+    [&](std::size_t c)
+    {
+      for (std::size_t first = starts[c]; first < starts[c + 1];)
+      {
+        std::size_t last = first + 1;
+        while (last < starts[c + 1] && rvd.PolygonTriangle[last] == rvd.PolygonTriangle[first])
+        {
+          ++last;
+        }
+        SharedCorners(rvd, area, first, last, tolerance, chunks[c]);
+        first = last;
+      }
+    });
+  for (const WeightedPoints& chunk : chunks)
+  {
+    out.Points.insert(out.Points.end(), chunk.Points.begin(), chunk.Points.end());
+    out.Weights.insert(out.Weights.end(), chunk.Weights.begin(), chunk.Weights.end());
+  }
+  // In space-filling-curve order: consecutive distance queries then share
+  // their nearest primitives (warm starts).
+  const std::vector<std::uint32_t> order =
+    MortonOrder(out.Points.size(), [&](std::size_t i) { return out.Points[i]; });
+  WeightedPoints sorted;
+  sorted.Points.reserve(order.size());
+  sorted.Weights.reserve(order.size());
+  for (std::uint32_t i : order)
+  {
+    sorted.Points.push_back(out.Points[i]);
+    sorted.Weights.push_back(out.Weights[i]);
+  }
+  return sorted;
+}
+}

@@ -94,6 +94,10 @@ Options:
   --fit, --no-fit       after simplification, fit the spheres' centres and
                         radii to the surface, connectivity fixed (default:
                         on; structural strategy only)
+  --fit-boundary-radii  with --sharp, let the fit change the radii of the
+                        spheres on the sheets' boundary (fillet centre lines)
+                        too: closer (CAD median Hausdorff 0.57% -> 0.36%),
+                        but the fillets found shift a little
   --seed S              sampler seed; same seed, same result (default 0)
   --threads T           threads for the parallel stages (0 = all, default)
   --envelope            also write envelope.vtp: the union of the medial
@@ -139,7 +143,8 @@ struct Options
   int Sharp = -1; // -1: from the preset
   bool Adaptive = false;
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
-       Fillets = false, SpikeCollapses = false, QMat = false, FinalFit = true;
+       Fillets = false, SpikeCollapses = false, QMat = false, FinalFit = true,
+       FitBoundaryRadii = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;
@@ -301,6 +306,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--fit" || arg == "--no-fit")
     {
       o.FinalFit = arg == "--fit";
+    }
+    else if (arg == "--fit-boundary-radii")
+    {
+      o.FitBoundaryRadii = true;
     }
     else if (arg == "--fillets")
     {
@@ -531,6 +540,7 @@ int main(int argc, char** argv)
   structural->SetFringeCollapses(o.FringeCollapses);
   structural->SetEulerNeutralSpikeCollapses(o.SpikeCollapses);
   structural->SetFinalFit(o.FinalFit);
+  structural->SetFitSheetBoundaryRadii(o.FitBoundaryRadii);
   structural->SetStrategy(
     o.QMat ? vtkStructuralMedialAxis::QMat : vtkStructuralMedialAxis::Structural);
   structural->SetRandomSeed(o.Seed);
@@ -695,6 +705,8 @@ int main(int argc, char** argv)
          << ", \"euler_neutral_spike_collapses\": "
          << (structural->GetEulerNeutralSpikeCollapses() ? "true" : "false")
          << ", \"final_fit\": " << (structural->GetFinalFit() ? "true" : "false")
+         << ", \"fit_boundary_radii\": "
+         << (structural->GetFitSheetBoundaryRadii() ? "true" : "false")
          << ", \"strategy\": " << (o.QMat ? "\"qmat\"" : "\"structural\"")
          << ", \"seed\": " << o.Seed << ", \"threads\": " << o.Threads << "},\n  \"seconds\": {";
     const char* stages[] = { "Sampling", "RestrictedVoronoi", "VoronoiMedialAxis", "Simplification",

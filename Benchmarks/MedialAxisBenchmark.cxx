@@ -3,7 +3,7 @@
 //
 //   medialaxis-benchmark [--samples N] [--target V] [--cad] [--threads T] [--scaling]
 //                        [--counts N1,N2,...] [--envelope] [--error-samples S]
-//                        [--envelope-samples E] [--delaunay] [--adaptive]
+//                        [--envelope-samples E] [--delaunay] [--adaptive] [--no-fit]
 //                        [--shape torus|box|...] [--resolution R] mesh...
 //
 // Memory: the process's resident peak during each stage, and in brackets
@@ -21,6 +21,8 @@
 // default the library's, 50,000).
 // --adaptive samples thin parts densely (SamplingOptions::Adaptive); the
 // sampling stage then includes the thickness rays.
+// --no-fit leaves out the simplifier's final fit (AtlasSimplifierOptions::
+// FinalFit), whose time is otherwise part of "simplify" and printed alone.
 // --delaunay also times CGAL's Delaunay triangulation of the same samples
 // alone (outside the stages: the least a Voronoi-based MAT pays).
 // The heap is tuned (HeapTuning.h) unless MEDIALAXIS_TUNE_HEAP=0; the
@@ -156,6 +158,7 @@ std::size_t TopologyGuard = AtlasSimplifierOptions().TopologyGuardVertexCount;
 bool Envelope = false;
 bool DelaunayBaseline = false;
 bool AdaptiveSampling = false;
+bool FinalFit = true;
 std::size_t ErrorSamples = 100000;
 std::size_t EnvelopeSamples = ReconstructionErrorOptions().NumberOfEnvelopeSamples;
 
@@ -245,6 +248,7 @@ std::vector<Stage> RunPipeline(
   options.TargetNumberOfVertices = target;
   options.PreserveSharpFeatures = cad;
   options.TopologyGuardVertexCount = TopologyGuard;
+  options.FinalFit = FinalFit;
   AtlasSimplifierResult simplified;
   stages.push_back(Measure(
     "simplify", [&] { simplified = SimplifyMedialAxis(initial, rvd, sites.Points, options); }));
@@ -258,6 +262,14 @@ std::vector<Stage> RunPipeline(
     static_cast<long long>(EulerCharacteristic(m)), simplified.Collapses,
     simplified.RejectedCollapses, simplified.RelaxedCollapses, simplified.FoldingAllowedCollapses,
     simplified.FoldRepairCollapses, simplified.Batches, simplified.QueueInitialisationSeconds);
+  if (FinalFit)
+  {
+    std::printf("  final fit: %d rounds kept, %d rejected; RMS distance of the fit points %.3g -> "
+                "%.3g, largest %.3g -> %.3g; %.3f s\n",
+      simplified.Fit.AcceptedRounds, simplified.Fit.RejectedRounds, simplified.Fit.InitialRms,
+      simplified.Fit.FinalRms, simplified.Fit.InitialMaximum, simplified.Fit.FinalMaximum,
+      simplified.FitSeconds);
+  }
   const MedialMeshQuality quality = MeasureQuality(m);
   std::printf("  simplified MAT quality: %zu degenerate, %zu folded triangles (%zu folds), %s; "
               "mean min angle %.1f deg, %.1f%% below 30 deg, mean Q %.3f\n",
@@ -313,6 +325,8 @@ int main(int argc, char* argv[])
       DelaunayBaseline = true;
     else if (arg == "--adaptive")
       AdaptiveSampling = true;
+    else if (arg == "--no-fit")
+      FinalFit = false;
     else if (arg == "--error-samples" && i + 1 < argc)
       ErrorSamples = std::stoul(argv[++i]);
     else if (arg == "--envelope-samples" && i + 1 < argc)
@@ -336,7 +350,7 @@ int main(int argc, char* argv[])
       std::cout << "usage: " << argv[0]
                 << " [--samples N] [--target V] [--cad] [--threads T] [--scaling]"
                    " [--counts N1,N2,...] [--envelope] [--error-samples S]"
-                   " [--envelope-samples E] [--delaunay] [--adaptive]"
+                   " [--envelope-samples E] [--delaunay] [--adaptive] [--no-fit]"
                    " [--shape torus|sphere|box] [--resolution R] mesh...\n";
       return 0;
     }

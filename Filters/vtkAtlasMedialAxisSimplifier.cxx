@@ -169,6 +169,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.EulerNeutralSpikeCollapses = this->EulerNeutralSpikeCollapses;
   options.FinalFit = this->FinalFit;
   options.FitIterations = this->FitIterations;
+  options.FitSheetBoundaryRadii = this->FitSheetBoundaryRadii;
   options.Progress = [this](double f)
   {
     this->UpdateProgress(0.05 + 0.9 * f);
@@ -236,4 +237,5 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
   os << indent << "FinalFit: " << this->FinalFit << "\n";
   os << indent << "FitIterations: " << this->FitIterations << "\n";
+  os << indent << "FitSheetBoundaryRadii: " << this->FitSheetBoundaryRadii << "\n";
 }

@@ -282,6 +282,7 @@ int vtkStructuralMedialAxis::RequestData(
   simplifier->SetFringeCollapses(this->FringeCollapses);
   simplifier->SetEulerNeutralSpikeCollapses(this->EulerNeutralSpikeCollapses);
   simplifier->SetFinalFit(this->FinalFit);
+  simplifier->SetFitSheetBoundaryRadii(this->FitSheetBoundaryRadii);
   simplifier->SetLambda(this->Lambda);
   simplifier->SetSpikeThreshold(this->SpikeThreshold);
   vtkNew<vtkQMatSimplifier> qmat;
@@ -404,6 +405,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
   os << indent << "FinalFit: " << this->FinalFit << "\n";
+  os << indent << "FitSheetBoundaryRadii: " << this->FitSheetBoundaryRadii << "\n";
   os << indent << "Strategy: " << (this->Strategy == QMat ? "QMat" : "Structural") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "FeatureNormalFiltering: " << this->FeatureNormalFiltering << "\n";

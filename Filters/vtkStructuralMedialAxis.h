@@ -150,6 +150,15 @@ public:
   ///@}
 
   ///@{
+  /// CAD mode: let the final fit change the radii of the spheres on the
+  /// sheets' boundary (fillet centre lines) too (default off; see
+  /// vtkAtlasMedialAxisSimplifier::FitSheetBoundaryRadii).
+  vtkSetMacro(FitSheetBoundaryRadii, bool);
+  vtkGetMacro(FitSheetBoundaryRadii, bool);
+  vtkBooleanMacro(FitSheetBoundaryRadii, bool);
+  ///@}
+
+  ///@{
   /// Simplification strategy: Structural (default, the Atlas-guided energy
   /// of Structural MAT) or QMat (Q-MAT's slab quadric error on the same
   /// initial medial mesh, for comparison; sharp-feature snapping, Lambda and
@@ -209,6 +218,7 @@ protected:
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   bool EulerNeutralSpikeCollapses = false;
   bool FinalFit = true;
+  bool FitSheetBoundaryRadii = false;
   int Strategy = Structural;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;

@@ -63,7 +63,7 @@ TEST(EnvelopeFit, RecoversAPerturbedBall)
   mesh.Radii = { 0.8 };
   EnvelopeFitOptions options;
   options.Iterations = 12;
-  const EnvelopeFitResult result = FitMedialEnvelope(mesh, sphere.Points, {}, {}, options);
+  const EnvelopeFitResult result = FitMedialEnvelope(mesh, { sphere.Points, {}, {} }, {}, options);
   EXPECT_GT(result.InitialMaximum, 0.25);
   EXPECT_LT(Norm(mesh.Centers[0]), 1e-4);
   EXPECT_NEAR(mesh.Radii[0], 1.0, 1e-4);
@@ -89,7 +89,7 @@ TEST(EnvelopeFit, PerturbedCapsuleAxisFitsNearlyExactly)
 
   EnvelopeFitOptions options;
   options.Iterations = 20;
-  const EnvelopeFitResult result = FitMedialEnvelope(mesh, capsule.Points, {}, {}, options);
+  const EnvelopeFitResult result = FitMedialEnvelope(mesh, { capsule.Points, {}, {} }, {}, options);
   const double after = LargestDistance(mesh, capsule.Points);
   EXPECT_GT(before, 0.03);
   EXPECT_LT(after, 0.02 * before) << "before " << before << ", after " << after;
@@ -109,34 +109,42 @@ TEST(EnvelopeFit, PerturbedCapsuleAxisFitsNearlyExactly)
     << "before " << hausdorffBefore << ", after " << hausdorffAfter;
 }
 
-// Fixed spheres (here two on the exact axis) do not move, bit for bit; the
-// others still fit.
+// Fixed spheres (here two on the exact axis) do not move, bit for bit;
+// radius-only spheres keep their centre; the others still fit.
 TEST(EnvelopeFit, FixedSpheresStay)
 {
   const TriangleMesh capsule = MakeCapsule(0.3, 1.0, 12);
   MedialMesh mesh = PerturbedCapsuleAxis(6, 0.3, 1.0);
-  std::vector<std::uint8_t> fixed(mesh.NumberOfVertices(), 0);
+  std::vector<SphereFreedom> freedom(mesh.NumberOfVertices(), SphereFreedom::Free);
   for (int v : { 0, 3 })
   {
-    fixed[v] = 1;
+    freedom[v] = SphereFreedom::Fixed;
     mesh.Centers[v] = { 0.0, 0.0, v == 0 ? -0.5 : 0.1 };
     mesh.Radii[v] = 0.3;
   }
+  freedom[5] = SphereFreedom::RadiusOnly;
+  mesh.Centers[5] = { 0.0, 0.0, 0.5 };
   const MedialMesh before = mesh;
   EnvelopeFitOptions options;
   options.Iterations = 10;
-  const EnvelopeFitResult result = FitMedialEnvelope(mesh, capsule.Points, {}, fixed, options);
+  const EnvelopeFitResult result =
+    FitMedialEnvelope(mesh, { capsule.Points, {}, {} }, freedom, options);
   EXPECT_LT(result.FinalRms, 0.1 * result.InitialRms);
   for (std::size_t v = 0; v < mesh.NumberOfVertices(); ++v)
   {
-    if (fixed[v])
+    switch (freedom[v])
     {
-      EXPECT_EQ(mesh.Centers[v], before.Centers[v]) << v;
-      EXPECT_EQ(mesh.Radii[v], before.Radii[v]) << v;
-    }
-    else
-    {
-      EXPECT_NE(mesh.Centers[v], before.Centers[v]) << v;
+      case SphereFreedom::Fixed:
+        EXPECT_EQ(mesh.Centers[v], before.Centers[v]) << v;
+        EXPECT_EQ(mesh.Radii[v], before.Radii[v]) << v;
+        break;
+      case SphereFreedom::RadiusOnly:
+        EXPECT_EQ(mesh.Centers[v], before.Centers[v]) << v;
+        EXPECT_NEAR(mesh.Radii[v], 0.3, 0.003) << v << " (from " << before.Radii[v] << ")";
+        break;
+      case SphereFreedom::Free:
+        EXPECT_NE(mesh.Centers[v], before.Centers[v]) << v;
+        break;
     }
   }
 }
@@ -150,7 +158,7 @@ TEST(EnvelopeFit, AbortLeavesTheMesh)
   const MedialMesh before = mesh;
   EnvelopeFitOptions options;
   options.Progress = [](double) { return false; };
-  const EnvelopeFitResult result = FitMedialEnvelope(mesh, capsule.Points, {}, {}, options);
+  const EnvelopeFitResult result = FitMedialEnvelope(mesh, { capsule.Points, {}, {} }, {}, options);
   EXPECT_TRUE(result.Aborted);
   EXPECT_EQ(result.AcceptedRounds, 0);
   EXPECT_EQ(mesh.Centers, before.Centers);
@@ -165,7 +173,7 @@ TEST(FitPoints, CornersWhereThreeCellsMeet)
 {
   const TriangleMesh box = MakeRoundedBox({ 2.0, 1.5, 1.0 }, 0.3, 8);
   const test::SimplifiedRun run = test::InitialMedialAxis(box, 3000);
-  const WeightedPoints points = FitPoints(run.Rvd, run.Sites.Points);
+  const FitTarget points = FitPoints(run.Rvd, run.Sites.Points);
   const std::size_t sites = run.Sites.Points.size();
   const std::size_t corners = points.Points.size() - sites;
   EXPECT_GT(corners, 19 * sites / 10);
@@ -197,6 +205,21 @@ TEST(FitPoints, CornersWhereThreeCellsMeet)
     equidistant += std::sqrt(d2[2]) - std::sqrt(d2[0]) < 1e-6 * std::sqrt(d2[0]) ? 1 : 0;
   }
   EXPECT_EQ(equidistant, corners);
+  // Sites only: each stands for its whole cell.
+  FitPointsOptions sitesAndSurface;
+  sitesAndSurface.Corners = false;
+  sitesAndSurface.DenseSurface = true;
+  const FitTarget sitesOnly = FitPoints(run.Rvd, run.Sites.Points, sitesAndSurface);
+  ASSERT_EQ(sitesOnly.Points.size(), sites);
+  for (std::size_t s = 0; s < sites; ++s)
+  {
+    EXPECT_NEAR(sitesOnly.Weights[s], run.Rvd.CellArea[s], 1e-9 * area) << s;
+  }
+  // The surface: the sites and the distinct polygon vertices (shared by two
+  // or three polygons inside a triangle, by none across its edges).
+  EXPECT_TRUE(points.Surface.empty());
+  EXPECT_GT(sitesOnly.Surface.size(), sites + run.Rvd.Vertices.size() / 3);
+  EXPECT_LT(sitesOnly.Surface.size(), sites + run.Rvd.Vertices.size());
 }
 
 // Inside the simplifier: the fit lowers the two-sided Hausdorff distance of
@@ -252,24 +275,30 @@ TEST(EnvelopeFit, LowersTheErrorOfASimplifiedMesh)
 }
 
 // CAD mode: spheres on sharp edges and on the boundary of the sheets (where
-// fillet centre lines run) keep the place the collapses gave them; the
+// fillet centre lines run) stay where the collapses left them; with
+// FitSheetBoundaryRadii the boundary ones keep their centres only. The
 // others move.
 TEST(EnvelopeFit, CadModeKeepsSharpEdgesAndSheetBoundaries)
 {
-  const TriangleMesh box = MakeRoundedBox({ 2.0, 1.5, 1.0 }, 0.2, 12);
-  const test::SimplifiedRun run = test::InitialMedialAxis(box, 8000);
-  auto simplify = [&](bool fit)
+  // A prism with two rounded edges (a fillet each) and ten sharp ones.
+  const LabelledTriangleMesh part =
+    MakeFilletedPrism({ 2.0, 1.5, 1.0 }, { 0.25, 0, 0.2, 0 }, { 0.25, 0, 0.2, 0 }, 12);
+  const test::SimplifiedRun run = test::InitialMedialAxis(part.Mesh, 5000);
+  auto simplify = [&](bool fit, bool boundaryRadii)
   {
     AtlasSimplifierOptions options;
     options.TargetNumberOfVertices = 400;
     options.PreserveSharpFeatures = true;
     options.FinalFit = fit;
+    options.FitSheetBoundaryRadii = boundaryRadii;
     return SimplifyMedialAxis(run.Initial, run.Rvd, run.Sites.Points, options);
   };
-  const AtlasSimplifierResult plain = simplify(false), fitted = simplify(true);
-  const MedialMesh &a = plain.Medial.Mesh, &b = fitted.Medial.Mesh;
+  const AtlasSimplifierResult plain = simplify(false, false), fitted = simplify(true, false),
+                              radii = simplify(true, true);
+  const MedialMesh &a = plain.Medial.Mesh, &b = fitted.Medial.Mesh, &c = radii.Medial.Mesh;
   ASSERT_EQ(a.Faces, b.Faces);
-  std::vector<std::uint8_t> kept = plain.Medial.FeatureVertex;
+  ASSERT_EQ(a.Faces, c.Faces);
+  std::vector<std::uint8_t> boundary(a.NumberOfVertices(), 0);
   std::map<std::array<Index, 2>, int> edgeFaces;
   for (const auto& t : a.Faces)
   {
@@ -282,24 +311,36 @@ TEST(EnvelopeFit, CadModeKeepsSharpEdgesAndSheetBoundaries)
   {
     if (faces == 1)
     {
-      kept[edge[0]] = kept[edge[1]] = 1;
+      boundary[edge[0]] = boundary[edge[1]] = 1;
     }
   }
-  std::size_t keptCount = 0, moved = 0;
+  std::size_t features = 0, boundaries = 0, resized = 0, moved = 0;
   for (std::size_t v = 0; v < a.NumberOfVertices(); ++v)
   {
-    if (kept[v])
+    if (plain.Medial.FeatureVertex[v])
     {
-      ++keptCount;
+      ++features;
       EXPECT_EQ(a.Centers[v], b.Centers[v]) << v;
       EXPECT_EQ(a.Radii[v], b.Radii[v]) << v;
+      EXPECT_EQ(a.Centers[v], c.Centers[v]) << v;
+      EXPECT_EQ(a.Radii[v], c.Radii[v]) << v;
+    }
+    else if (boundary[v])
+    {
+      ++boundaries;
+      EXPECT_EQ(a.Centers[v], b.Centers[v]) << v;
+      EXPECT_EQ(a.Radii[v], b.Radii[v]) << v;
+      EXPECT_EQ(a.Centers[v], c.Centers[v]) << v;
+      resized += a.Radii[v] != c.Radii[v] ? 1 : 0;
     }
     else
     {
       moved += a.Centers[v] != b.Centers[v] ? 1 : 0;
     }
   }
-  EXPECT_GT(keptCount, 0u);
+  EXPECT_GT(features, 0u);
+  EXPECT_GT(boundaries, 0u);
+  EXPECT_GT(resized, 0u);
   EXPECT_GT(moved, 0u);
   EXPECT_GT(fitted.Fit.AcceptedRounds, 0);
 }

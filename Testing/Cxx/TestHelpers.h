@@ -181,10 +181,11 @@ inline SimplifiedRun InitialMedialAxis(
 
 inline SimplifiedRun Simplify(const TriangleMesh& surface, std::size_t samples, std::size_t target,
   bool cad, bool concaveFiltering = true, bool invaginatedTerm = true,
-  FringeCollapseMode fringeCollapses = FringeCollapseMode::Automatic)
+  FringeCollapseMode fringeCollapses = FringeCollapseMode::Automatic, bool finalFit = true)
 {
   SimplifiedRun run = InitialMedialAxis(surface, samples, concaveFiltering);
   AtlasSimplifierOptions options;
+  options.FinalFit = finalFit;
   options.TargetNumberOfVertices = target;
   options.PreserveSharpFeatures = cad;
   options.InvaginatedTerm = invaginatedTerm;

@@ -31,6 +31,9 @@ struct EnvelopeFitOptions
   /// Gauss-Newton rounds (each one rebuilds the envelope and measures every
   /// point once).
   int Iterations = 4;
+  /// Stop after a kept round that lowered the objective by less than this
+  /// fraction (the rounds after it would gain less still).
+  double Convergence = 0.03;
   /// Weight of the term that keeps each ball inside the surface, (r - |c -
   /// q|)^2 where the ball reaches past its nearest point q, relative to the
   /// mean surface area per sphere. Without it, balls that grow to reach
@@ -64,12 +67,30 @@ struct EnvelopeFitResult
   bool Aborted = false;
 };
 
-/// Moves the spheres of `mesh` (not those with fixedVertex[v] != 0; the
-/// vector may be empty) to fit `points` on the surface, each with a weight
-/// (the surface area it stands for; empty = all 1). Deterministic at any
-/// thread count.
-EnvelopeFitResult FitMedialEnvelope(MedialMesh& mesh, const std::vector<Point3>& points,
-  const std::vector<double>& weights, const std::vector<std::uint8_t>& fixedVertex,
+/// What the fit may change of a sphere.
+enum class SphereFreedom : std::uint8_t
+{
+  Free,      // centre and radius
+  Fixed,     // nothing
+  RadiusOnly // the radius; the centre stays
+};
+
+/// The surface to fit.
+struct FitTarget
+{
+  /// Points the envelope is pulled through, with the surface area each
+  /// stands for (empty: all 1).
+  std::vector<Point3> Points;
+  std::vector<double> Weights;
+  /// Points of the surface, as dense as is cheap, for the test of balls
+  /// reaching out of it (empty: Points).
+  std::vector<Point3> Surface;
+};
+
+/// Moves the spheres of `mesh` as `freedom` allows (empty: all free) to fit
+/// `target`. Deterministic at any thread count.
+EnvelopeFitResult FitMedialEnvelope(MedialMesh& mesh, const FitTarget& target,
+  const std::vector<SphereFreedom>& freedom,
   const EnvelopeFitOptions& options = EnvelopeFitOptions());
 }
 

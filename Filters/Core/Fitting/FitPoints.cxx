@@ -14,56 +14,61 @@ namespace medialaxis
 {
 namespace
 {
-/// The corners of the polygons [first, last) (one surface triangle) that
-/// three or more polygons share: equal to within `tolerance`, since each
-/// polygon is clipped on its own. Sorted by x, each corner is compared with
+/// The distinct vertices of the polygons [first, last) (one surface
+/// triangle) into out.Surface with `dense` and, with `corners`, those that three or more
+/// polygons share into out.Points. Equal means within `tolerance`, since each
+/// polygon is clipped on its own. Sorted by x, each vertex is compared with
 /// those within the tolerance in x only (large triangles of CAD meshes hold
 /// thousands of polygons).
-void SharedCorners(const RestrictedVoronoiDiagram& rvd, const std::vector<double>& area,
-  std::size_t first, std::size_t last, double tolerance, WeightedPoints& out)
+void TriangleVertices(const RestrictedVoronoiDiagram& rvd, const std::vector<double>& area,
+  std::size_t first, std::size_t last, double tolerance, bool corners, bool dense, FitTarget& out)
 {
-  std::vector<std::pair<Point3, Index>> corners; // position, site
+  std::vector<std::pair<Point3, Index>> vertices; // position, site
   for (std::size_t p = first; p < last; ++p)
   {
     for (Index k = rvd.Offsets[p]; k < rvd.Offsets[p + 1]; ++k)
     {
-      corners.emplace_back(rvd.Vertices[k], rvd.PolygonSite[p]);
+      vertices.emplace_back(rvd.Vertices[k], rvd.PolygonSite[p]);
     }
   }
-  std::sort(corners.begin(), corners.end());
+  std::sort(vertices.begin(), vertices.end());
   const double tolerance2 = tolerance * tolerance;
-  std::vector<char> taken(corners.size(), 0);
-  for (std::size_t i = 0; i < corners.size(); ++i)
+  std::vector<char> taken(vertices.size(), 0);
+  for (std::size_t i = 0; i < vertices.size(); ++i)
   {
     if (taken[i])
     {
       continue;
     }
-    Index cells[3] = { corners[i].second, -1, -1 };
+    if (dense)
+    {
+      out.Surface.push_back(vertices[i].first);
+    }
+    Index cells[3] = { vertices[i].second, -1, -1 };
     int count = 1;
     for (std::size_t j = i + 1;
-         j < corners.size() && corners[j].first[0] - corners[i].first[0] <= tolerance; ++j)
+         j < vertices.size() && vertices[j].first[0] - vertices[i].first[0] <= tolerance; ++j)
     {
-      if (!taken[j] && Distance2(corners[i].first, corners[j].first) <= tolerance2)
+      if (!taken[j] && Distance2(vertices[i].first, vertices[j].first) <= tolerance2)
       {
         taken[j] = 1;
-        if (count < 3 && corners[j].second != cells[0] && corners[j].second != cells[1])
+        if (count < 3 && vertices[j].second != cells[0] && vertices[j].second != cells[1])
         {
-          cells[count++] = corners[j].second;
+          cells[count++] = vertices[j].second;
         }
       }
     }
-    if (count == 3)
+    if (corners && count == 3)
     {
-      out.Points.push_back(corners[i].first);
+      out.Points.push_back(vertices[i].first);
       out.Weights.push_back((area[cells[0]] + area[cells[1]] + area[cells[2]]) / 12.0);
     }
   }
 }
 }
 
-WeightedPoints FitPoints(
-  const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites, bool corners)
+FitTarget FitPoints(const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
+  const FitPointsOptions& options)
 {
   std::vector<double> area(sites.size(), 0.0);
   for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)
@@ -74,21 +79,30 @@ WeightedPoints FitPoints(
       area[rvd.PolygonSite[p]] += 0.5 * Norm(Cross(rvd.Vertices[k] - a, rvd.Vertices[k + 1] - a));
     }
   }
-  WeightedPoints out;
+  FitTarget out;
   out.Points = sites;
   out.Weights.resize(sites.size());
+  // Corners need the polygons' triangles (absent: the sites alone, and every
+  // polygon vertex as the dense surface).
+  const bool triangles = rvd.PolygonTriangle.size() == rvd.NumberOfPolygons();
+  const bool corners = options.Corners && triangles && !rvd.Vertices.empty();
+  const bool dense = options.DenseSurface;
+  if (dense)
+  {
+    out.Surface = sites;
+  }
   for (std::size_t s = 0; s < sites.size(); ++s)
   {
-    out.Weights[s] = 0.5 * area[s];
+    // Without corners a site stands for its whole cell.
+    out.Weights[s] = (corners ? 0.5 : 1.0) * area[s];
   }
-  // Corners need the polygons' triangles (absent: the sites alone); the
-  // sites then stand for their whole cells.
-  if (!corners || rvd.Vertices.empty() || rvd.PolygonTriangle.size() != rvd.NumberOfPolygons())
+  if (!corners && !dense)
   {
-    for (double& w : out.Weights)
-    {
-      w *= 2.0;
-    }
+    return out;
+  }
+  if (!triangles)
+  {
+    out.Surface.insert(out.Surface.end(), rvd.Vertices.begin(), rvd.Vertices.end());
     return out;
   }
   const auto [lo, hi] = BoundingBox(rvd.Vertices);
@@ -109,7 +123,7 @@ WeightedPoints FitPoints(
     }
   }
   starts.push_back(np);
-  std::vector<WeightedPoints> chunks(starts.size() - 1);
+  std::vector<FitTarget> chunks(starts.size() - 1);
   tbb::parallel_for(std::size_t(0), chunks.size(),
     [&](std::size_t c)
     {
@@ -120,20 +134,22 @@ WeightedPoints FitPoints(
         {
           ++last;
         }
-        SharedCorners(rvd, area, first, last, tolerance, chunks[c]);
+        TriangleVertices(rvd, area, first, last, tolerance, corners, dense, chunks[c]);
         first = last;
       }
     });
-  for (const WeightedPoints& chunk : chunks)
+  for (const FitTarget& chunk : chunks)
   {
     out.Points.insert(out.Points.end(), chunk.Points.begin(), chunk.Points.end());
     out.Weights.insert(out.Weights.end(), chunk.Weights.begin(), chunk.Weights.end());
+    out.Surface.insert(out.Surface.end(), chunk.Surface.begin(), chunk.Surface.end());
   }
   // In space-filling-curve order: consecutive distance queries then share
   // their nearest primitives (warm starts).
   const std::vector<std::uint32_t> order =
     MortonOrder(out.Points.size(), [&](std::size_t i) { return out.Points[i]; });
-  WeightedPoints sorted;
+  FitTarget sorted;
+  sorted.Surface = std::move(out.Surface);
   sorted.Points.reserve(order.size());
   sorted.Weights.reserve(order.size());
   for (std::uint32_t i : order)

@@ -677,30 +677,41 @@ AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
     if (options.FinalFit)
     {
       const auto fitStart = std::chrono::steady_clock::now();
-      // The corners of the cells, where an envelope through the sites falls
-      // shortest on curved surfaces, triple the points. CAD parts, mostly
-      // flat or singly curved and sampled densely, fit as closely through
-      // the sites alone (measured on the 13 CAD meshes of the shared set,
-      // 50,000 samples -> 5,000 spheres: median two-sided Hausdorff distance
-      // 0.56% against 0.59%) at a third of the cost.
-      const WeightedPoints points = FitPoints(rvd, sites, !options.PreserveSharpFeatures);
+      // Organic shapes: the corners of the cells, where an envelope through
+      // the sites falls shortest on curved surfaces, triple the points. CAD
+      // parts, mostly flat or singly curved and sampled densely, fit as
+      // closely through the sites alone at a third of the cost, but their
+      // balls poke out along sharp edges, which only the dense surface sees.
+      FitPointsOptions pointOptions;
+      pointOptions.Corners = !options.PreserveSharpFeatures;
+      pointOptions.DenseSurface = options.PreserveSharpFeatures;
+      const FitTarget target = FitPoints(rvd, sites, pointOptions);
       EnvelopeFitOptions fit;
       fit.Iterations = options.FitIterations;
       fit.SpikeThreshold = options.SpikeThreshold;
       fit.Progress = [&](double) { return !options.Progress || options.Progress(1.0); };
-      // CAD parts: feature vertices stay on their sharp edges and the
+      // CAD parts: feature vertices stay on their sharp edges, and the
       // boundary of the medial sheets, where fillet centre lines run, stays
-      // as simplified (the fillet detector refines those lines from it).
-      std::vector<std::uint8_t> fixed;
+      // (the fillet detector finds and refines those lines from it), or
+      // keeps its centres with FitSheetBoundaryRadii.
+      std::vector<SphereFreedom> freedom;
       if (options.PreserveSharpFeatures)
       {
-        fixed = result.Medial.FeatureVertex;
+        freedom.assign(result.Medial.Mesh.NumberOfVertices(), SphereFreedom::Free);
         for (const auto& e : SheetBoundaryEdges(result.Medial.Mesh))
         {
-          fixed[e[0]] = fixed[e[1]] = 1;
+          freedom[e[0]] = freedom[e[1]] =
+            options.FitSheetBoundaryRadii ? SphereFreedom::RadiusOnly : SphereFreedom::Fixed;
+        }
+        for (std::size_t v = 0; v < freedom.size(); ++v)
+        {
+          if (result.Medial.FeatureVertex[v])
+          {
+            freedom[v] = SphereFreedom::Fixed;
+          }
         }
       }
-      result.Fit = FitMedialEnvelope(result.Medial.Mesh, points.Points, points.Weights, fixed, fit);
+      result.Fit = FitMedialEnvelope(result.Medial.Mesh, target, freedom, fit);
       result.FitSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - fitStart).count();
     }

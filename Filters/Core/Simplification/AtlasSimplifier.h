@@ -105,6 +105,14 @@ struct AtlasSimplifierOptions
   /// sheets (fillet centre lines) stay where the collapses left them.
   bool FinalFit = true;
   int FitIterations = 4;
+  /// With PreserveSharpFeatures: fit the radii of the spheres on the sheets'
+  /// boundary too (their centres still stay). Measured on the 13 CAD meshes
+  /// of the shared set (50,000 samples -> 5,000 spheres): median two-sided
+  /// Hausdorff distance 0.36% against 0.57%. Off by default: the changed
+  /// radii move the fillet detector's choice of centre-line edges (on a
+  /// rounded cylinder rim, 112 instead of 113 edges: recall of the fillet
+  /// faces 0.949 instead of 0.970).
+  bool FitSheetBoundaryRadii = false;
   /// Fraction in [0, 1]; returning false aborts (the result is then empty).
   std::function<bool(double)> Progress;
 };

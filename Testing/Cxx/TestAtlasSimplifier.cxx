@@ -128,30 +128,6 @@ double DistanceToCubeEdges(const Point3& p, double h)
   return best;
 }
 
-// Edges of the medial mesh that bound exactly one triangle.
-std::vector<std::array<Index, 2>> BoundaryEdges(const MedialMesh& m)
-{
-  std::vector<std::array<Index, 2>> edges;
-  for (const auto& t : m.Faces)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      edges.push_back({ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) });
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  std::vector<std::array<Index, 2>> boundary;
-  for (std::size_t i = 0; i < edges.size(); ++i)
-  {
-    const bool single =
-      (i == 0 || edges[i - 1] != edges[i]) && (i + 1 == edges.size() || edges[i + 1] != edges[i]);
-    if (single)
-    {
-      boundary.push_back(edges[i]);
-    }
-  }
-  return boundary;
-}
 }
 
 TEST(AtlasSimplifier, BoxBoundaryReachesTheSharpEdges)
@@ -164,7 +140,7 @@ TEST(AtlasSimplifier, BoxBoundaryReachesTheSharpEdges)
     const MedialMesh& m = run.Result.Medial.Mesh;
     double worstRadius = 0.0, worstDistance = 0.0, meanDistance = 0.0;
     std::set<Index> boundary;
-    for (const auto& e : BoundaryEdges(m))
+    for (const auto& e : SheetBoundaryEdges(m))
     {
       boundary.insert(e[0]);
       boundary.insert(e[1]);
@@ -239,7 +215,7 @@ TEST(AtlasSimplifier, RoundedBoxBoundaryFollowsTheFilletCentreLines)
   const MedialMesh& m = run.Result.Medial.Mesh;
   std::size_t checked = 0;
   double worst = 0.0;
-  for (const auto& e : BoundaryEdges(m))
+  for (const auto& e : SheetBoundaryEdges(m))
   {
     if (std::fabs(m.Radii[e[0]] - rho) > 0.1 * rho || std::fabs(m.Radii[e[1]] - rho) > 0.1 * rho)
     {

@@ -15,7 +15,6 @@
 
 #include <cmath>
 #include <cstring>
-#include <map>
 
 using namespace medialaxis;
 
@@ -299,20 +298,9 @@ TEST(EnvelopeFit, CadModeKeepsSharpEdgesAndSheetBoundaries)
   ASSERT_EQ(a.Faces, b.Faces);
   ASSERT_EQ(a.Faces, c.Faces);
   std::vector<std::uint8_t> boundary(a.NumberOfVertices(), 0);
-  std::map<std::array<Index, 2>, int> edgeFaces;
-  for (const auto& t : a.Faces)
+  for (const auto& e : SheetBoundaryEdges(a))
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      ++edgeFaces[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
-    }
-  }
-  for (const auto& [edge, faces] : edgeFaces)
-  {
-    if (faces == 1)
-    {
-      boundary[edge[0]] = boundary[edge[1]] = 1;
-    }
+    boundary[e[0]] = boundary[e[1]] = 1;
   }
   std::size_t features = 0, boundaries = 0, resized = 0, moved = 0;
   for (std::size_t v = 0; v < a.NumberOfVertices(); ++v)

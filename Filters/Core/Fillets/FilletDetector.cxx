@@ -110,37 +110,6 @@ enum class EdgeVerdict : std::uint8_t
   Undecided = 2, // too short for any surface point to fall within its span
 };
 
-// Medial edges on exactly one medial triangle, sorted.
-std::vector<std::array<Index, 2>> BoundaryEdges(const MedialMesh& medial)
-{
-  std::vector<std::array<Index, 2>> uses;
-  uses.reserve(3 * medial.Faces.size());
-  for (const auto& f : medial.Faces)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index a = f[k], b = f[(k + 1) % 3];
-      uses.push_back({ std::min(a, b), std::max(a, b) });
-    }
-  }
-  std::sort(uses.begin(), uses.end());
-  std::vector<std::array<Index, 2>> boundary;
-  for (std::size_t i = 0; i < uses.size();)
-  {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j] == uses[i])
-    {
-      ++j;
-    }
-    if (j - i == 1)
-    {
-      boundary.push_back(uses[i]);
-    }
-    i = j;
-  }
-  return boundary;
-}
-
 // Whether medial edge (a, b) is a fillet centre-line edge: most of the
 // surface within its span, among the triangles of both spheres' Atlas, lies
 // on its envelope.
@@ -276,7 +245,7 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
   const Lists siteTriangles = TrianglesOfSites(sites, polygonSite, polygonTriangle);
 
   // 1. Centre-line edges among the medial boundary edges.
-  const std::vector<std::array<Index, 2>> boundary = BoundaryEdges(medial);
+  const std::vector<std::array<Index, 2>> boundary = SheetBoundaryEdges(medial);
   result.BoundaryEdges = boundary.size();
   std::vector<EdgeVerdict> verdict(boundary.size(), EdgeVerdict::Rejected);
   const double minimumRadius = options.MinimumRadius * result.Diagonal;

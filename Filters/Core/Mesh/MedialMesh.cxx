@@ -134,7 +134,10 @@ std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh)
   return edges;
 }
 
-std::vector<std::array<Index, 2>> EdgesNotOnFaces(const MedialMesh& mesh)
+namespace
+{
+/// The three edges of every triangle, sorted, an edge once per triangle.
+std::vector<std::array<Index, 2>> FaceEdgeUses(const MedialMesh& mesh)
 {
   std::vector<std::array<Index, 2>> faceEdges;
   faceEdges.reserve(3 * mesh.Faces.size());
@@ -145,6 +148,33 @@ std::vector<std::array<Index, 2>> EdgesNotOnFaces(const MedialMesh& mesh)
     faceEdges.push_back(SortedEdge(f[2], f[0]));
   }
   std::sort(faceEdges.begin(), faceEdges.end());
+  return faceEdges;
+}
+}
+
+std::vector<std::array<Index, 2>> SheetBoundaryEdges(const MedialMesh& mesh)
+{
+  const std::vector<std::array<Index, 2>> faceEdges = FaceEdgeUses(mesh);
+  std::vector<std::array<Index, 2>> boundary;
+  for (std::size_t i = 0; i < faceEdges.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < faceEdges.size() && faceEdges[j] == faceEdges[i])
+    {
+      ++j;
+    }
+    if (j - i == 1)
+    {
+      boundary.push_back(faceEdges[i]);
+    }
+    i = j;
+  }
+  return boundary;
+}
+
+std::vector<std::array<Index, 2>> EdgesNotOnFaces(const MedialMesh& mesh)
+{
+  const std::vector<std::array<Index, 2>> faceEdges = FaceEdgeUses(mesh);
   std::vector<std::array<Index, 2>> result;
   for (const auto& e : mesh.Edges)
   {

@@ -44,6 +44,10 @@ std::vector<std::array<Index, 2>> EdgesNotOnFaces(const MedialMesh& mesh);
 /// Every distinct edge, face edges included, sorted by (min, max) vertex id.
 std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh);
 
+/// The triangle edges on exactly one triangle (the boundary of the medial
+/// sheets), sorted by (min, max) vertex id.
+std::vector<std::array<Index, 2>> SheetBoundaryEdges(const MedialMesh& mesh);
+
 /// V - E + F of the complex (E counts every distinct edge, face edges included).
 long long EulerCharacteristic(const MedialMesh& mesh);
 

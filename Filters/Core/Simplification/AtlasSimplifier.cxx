@@ -587,35 +587,6 @@ AtlasMedialMesh AtlasPolicy::Output(const MedialEdgeCollapse& mesh) const
   return out;
 }
 
-/// The triangle edges on exactly one triangle.
-std::vector<std::array<Index, 2>> SheetBoundaryEdges(const MedialMesh& mesh)
-{
-  std::vector<std::array<Index, 2>> halfEdges;
-  for (const auto& t : mesh.Faces)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      halfEdges.push_back({ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) });
-    }
-  }
-  std::sort(halfEdges.begin(), halfEdges.end());
-  std::vector<std::array<Index, 2>> boundary;
-  for (std::size_t i = 0; i < halfEdges.size();)
-  {
-    std::size_t j = i + 1;
-    while (j < halfEdges.size() && halfEdges[j] == halfEdges[i])
-    {
-      ++j;
-    }
-    if (j - i == 1)
-    {
-      boundary.push_back(halfEdges[i]);
-    }
-    i = j;
-  }
-  return boundary;
-}
-
 EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
 {
   EdgeCollapseOptions c;

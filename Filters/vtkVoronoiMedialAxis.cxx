@@ -92,6 +92,7 @@ int vtkVoronoiMedialAxis::RequestData(
   medialaxis::VoronoiMedialAxisOptions options;
   options.ConcaveFiltering = this->ConcaveFiltering;
   options.RepairThinParts = this->RepairThinParts;
+  options.RepairTopology = this->RepairTopology;
   options.ConcaveFilterAlpha = this->ConcaveFilterAlpha;
   options.RelativeWeldTolerance = this->RelativeWeldTolerance;
   options.Progress = [this](double f)
@@ -133,7 +134,9 @@ int vtkVoronoiMedialAxis::RequestData(
       { "AmbiguousInsideTests", result.AmbiguousInsideTests },
       { "WeldedCells", result.WeldedCells }, { "FilteredTriangles", result.FilteredFaces },
       { "DroppedPockets", result.DroppedPockets }, { "SpanningCells", result.SpanningCells },
-      { "OpenedVoids", result.OpenedVoids } })
+      { "OpenedVoids", result.OpenedVoids }, { "EdgesAcrossSurface", result.EdgesAcrossSurface },
+      { "JoinedPieces", result.JoinedPieces },
+      { "CutLoops", result.CutLoops }, { "FilledHoles", result.FilledHoles } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }
@@ -146,6 +149,7 @@ void vtkVoronoiMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ConcaveFiltering: " << this->ConcaveFiltering << "\n";
   os << indent << "RepairThinParts: " << this->RepairThinParts << "\n";
+  os << indent << "RepairTopology: " << this->RepairTopology << "\n";
   os << indent << "ConcaveFilterAlpha: " << this->ConcaveFilterAlpha << "\n";
   os << indent << "RelativeWeldTolerance: " << this->RelativeWeldTolerance << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";

@@ -29,9 +29,12 @@
  * `AtlasSites` / `AtlasOffsets` and point data `AtlasCount`; and field data
  * with counts (`DelaunayCells`, `InsideCells`, `AmbiguousInsideTests`,
  * `WeldedCells`, `FilteredTriangles`, `DroppedPockets`, `SpanningCells`,
- * `OpenedVoids`). A solid's medial axis encloses no void: where the Voronoi
- * complex does (around a pocket of cells whose circumcentres fell
- * outside), the face of least radius on the void's boundary is left out.
+ * `OpenedVoids`, `JoinedPieces`, `CutLoops`, `FilledHoles`). A solid's
+ * medial axis encloses no void: where the Voronoi complex does (around a
+ * pocket of cells whose circumcentres fell outside), the face of least
+ * radius on the void's boundary is left out. With RepairTopology, the
+ * complex also gets the solid's pieces and loops (see below); the triangles
+ * of a capped hole have `SitePair` -1.
  */
 #ifndef vtkVoronoiMedialAxis_h
 #define vtkVoronoiMedialAxis_h
@@ -66,6 +69,19 @@ public:
   ///@}
 
   ///@{
+  /// Give the output the topology of the solid, as a medial axis has: one
+  /// piece per closed surface and one loop per handle (the surface's
+  /// genus). Where sparse sampling left more, a cut-off piece is joined to
+  /// the rest by an edge inside the surface, the face-less edge on the
+  /// shortest spurious loop is removed, and the shortest holes in sheets
+  /// are capped by a fan, never closing a void (default on; counts in field
+  /// data `JoinedPieces`, `CutLoops`, `FilledHoles`).
+  vtkSetMacro(RepairTopology, bool);
+  vtkGetMacro(RepairTopology, bool);
+  vtkBooleanMacro(RepairTopology, bool);
+  ///@}
+
+  ///@{
   /// Alpha of the concave filtering test (default 0.7).
   vtkSetClampMacro(ConcaveFilterAlpha, double, 0.0, 10.0);
   vtkGetMacro(ConcaveFilterAlpha, double);
@@ -93,6 +109,7 @@ protected:
 
   bool ConcaveFiltering = true;
   bool RepairThinParts = true;
+  bool RepairTopology = true;
   double ConcaveFilterAlpha = 0.7;
   double RelativeWeldTolerance = 1e-9;
   int NumberOfThreads = 0;

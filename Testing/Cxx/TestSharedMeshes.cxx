@@ -85,22 +85,6 @@ std::map<std::string, Expected> ReadSourcesTable()
   return table;
 }
 
-// Meshes whose initial medial mesh (10,000 sites) does not have the solid's
-// Euler characteristic, with the reason. All have parts thinner than the
-// sample spacing (about 0.8% of the diagonal at 10,000 sites), where the
-// Voronoi diagram of the samples leaks through the surface, the failure mode
-// of the paper's Fig. 19; casting is right at 50,000 sites. The simplifier
-// keeps the initial topology (checked below), so these are the exceptions at
-// 1,000 vertices too.
-const std::map<std::string, std::string>& KnownTopologyExceptions()
-{
-  static const std::map<std::string, std::string> exceptions = {
-    { "cheburashka.off", "thin ears" },
-    { "dragon.obj", "thin claws, horns and teeth" },
-  };
-  return exceptions;
-}
-
 // Self-intersecting meshes, where inside and outside are ambiguous near the
 // intersections (the winding number and the closest face can disagree).
 const std::map<std::string, std::string>& SelfIntersecting()
@@ -269,10 +253,7 @@ TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
             << " triangles, Euler characteristic " << chi << " (1 - genus = " << 1 - expected.Genus
             << "), " << mat.DroppedPockets << " pockets, " << mat.FilteredFaces
             << " filtered triangles\n";
-  if (KnownTopologyExceptions().count(name) == 0)
-  {
-    EXPECT_EQ(chi, 1 - expected.Genus) << name;
-  }
+  EXPECT_EQ(chi, 1 - expected.Genus) << name;
 
   // Simplified to 1,000 vertices: still a valid medial mesh with the same
   // topology (the link condition guards every collapse by default), except

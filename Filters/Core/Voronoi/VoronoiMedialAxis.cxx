@@ -9,6 +9,7 @@
 #include "Surface/SurfacePreparation.h"
 #include "Voronoi/DelaunayCells.h"
 #include "Voronoi/MedialComplexCleanup.h"
+#include "Voronoi/MedialTopologyRepair.h"
 #include "Voronoi/ThinPartRepair.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -760,6 +761,21 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   result.FilteredFaces = CollapseFlaggedTriangles(result, filtered);
   result.DroppedPockets =
     DropSmallComponents(result, std::max<std::size_t>(2, result.Mesh.Centers.size() / 1000));
+  // 7. What the sampling still got wrong about the solid's topology.
+  if (options.RepairTopology)
+  {
+    const TopologyRepairQueries surfaceQueries{
+      [&queries](const Point3& p) { return queries.Inside(p); },
+      [&queries](const Point3& p) { return queries.Distance(p); },
+      [&queries](const Point3& a, const Point3& b) { return queries.Crosses(a, b); }
+    };
+    const TopologyRepairCounts repaired =
+      RepairMedialTopology(result, ComputeSurfaceTopology(surface), surfaceQueries);
+    result.EdgesAcrossSurface = repaired.EdgesAcrossSurface;
+    result.JoinedPieces = repaired.JoinedPieces;
+    result.CutLoops = repaired.CutLoops;
+    result.FilledHoles = repaired.FilledHoles;
+  }
   report(1.0);
   return result;
 }

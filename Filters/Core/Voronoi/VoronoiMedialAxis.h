@@ -29,6 +29,11 @@ struct VoronoiMedialAxisOptions
   /// other although their circumcentres fall outside (see the .cxx), so that
   /// the part's medial sheet has no holes (paper 000, Fig. 19).
   bool RepairThinParts = true;
+  /// Give the complex the topology of the solid (MedialTopologyRepair.h):
+  /// one piece per solid, one loop per handle; edges that leave the solid
+  /// are removed, pieces cut off are joined,
+  /// spurious loops opened and holes in sheets capped, smallest first.
+  bool RepairTopology = true;
   /// Fraction in [0, 1]; returning false aborts (the result is then empty).
   std::function<bool(double)> Progress;
 };
@@ -54,6 +59,10 @@ struct VoronoiMedialAxisResult
   std::size_t DroppedPockets = 0;       // tiny disconnected pieces removed
   std::size_t SpanningCells = 0;        // kept by RepairThinParts, their vertices moved inside
   std::size_t OpenedVoids = 0;          // voids of the Voronoi complex opened by leaving out a face
+  std::size_t EdgesAcrossSurface = 0;   // RepairTopology: edges leaving the solid, removed
+  std::size_t JoinedPieces = 0;         // RepairTopology: pieces joined by a new edge
+  std::size_t CutLoops = 0;             // RepairTopology: face-less edges removed to open a loop
+  std::size_t FilledHoles = 0;          // RepairTopology: boundary loops capped
   bool Aborted = false;
 };
 

@@ -1,0 +1,1017 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Voronoi/MedialTopologyRepair.h"
+
+#include "Geometry/KdTree.h"
+#include "Geometry/Vec3.h"
+#include "Mesh/MedialMesh.h"
+#include "Support/DisjointSets.h"
+#include "Voronoi/MedialComplexCleanup.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <queue>
+#include <tuple>
+
+namespace medialaxis
+{
+namespace
+{
+using EdgeKey = std::array<Index, 2>;
+
+EdgeKey Key(Index a, Index b)
+{
+  return a < b ? EdgeKey{ a, b } : EdgeKey{ b, a };
+}
+
+std::size_t EdgeId(const std::vector<EdgeKey>& edges, Index a, Index b)
+{
+  return static_cast<std::size_t>(
+    std::lower_bound(edges.begin(), edges.end(), Key(a, b)) - edges.begin());
+}
+
+// Connected pieces of the complex, isolated vertices included.
+std::size_t CountPieces(const MedialMesh& mesh, const std::vector<EdgeKey>& edges)
+{
+  DisjointSets pieces(mesh.Centers.size());
+  for (const EdgeKey& e : edges)
+  {
+    pieces.Union(e[0], e[1]);
+  }
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < mesh.Centers.size(); ++v)
+  {
+    count += pieces.Find(static_cast<Index>(v)) == static_cast<Index>(v) ? 1 : 0;
+  }
+  return count;
+}
+
+// First Betti number, taking the second as zero: the void-opening step
+// before this one leaves no enclosed void.
+long long CountLoops(const MedialMesh& mesh)
+{
+  const std::vector<EdgeKey> edges = AllEdges(mesh);
+  const long long euler = static_cast<long long>(mesh.Centers.size()) -
+    static_cast<long long>(edges.size()) + static_cast<long long>(mesh.Faces.size());
+  return static_cast<long long>(CountPieces(mesh, edges)) - euler;
+}
+
+void AppendVertex(VoronoiMedialAxisResult& result, const Point3& centre, double radius,
+  const std::vector<Index>& neighbours)
+{
+  std::vector<Index> atlas;
+  for (Index v : neighbours)
+  {
+    atlas.insert(atlas.end(), result.AtlasSites.begin() + result.AtlasOffsets[v],
+      result.AtlasSites.begin() + result.AtlasOffsets[v + 1]);
+  }
+  std::sort(atlas.begin(), atlas.end());
+  atlas.erase(std::unique(atlas.begin(), atlas.end()), atlas.end());
+  result.AtlasSites.insert(result.AtlasSites.end(), atlas.begin(), atlas.end());
+  result.AtlasOffsets.push_back(static_cast<Index>(result.AtlasSites.size()));
+  result.Mesh.Centers.push_back(centre);
+  result.Mesh.Radii.push_back(radius);
+}
+
+// 0. A medial edge that leaves the solid and comes back bridges two parts
+// across the gap between them (a Delaunay cell spanning the gap had its
+// circumcentre inside): it and the faces on it go, and so do the scraps
+// of the bridge that this leaves on their own (pieces as small as the
+// pockets VoronoiMedialAxis.cxx drops).
+std::size_t DropEdgesAcrossSurface(
+  VoronoiMedialAxisResult& result, const TopologyRepairQueries& queries)
+{
+  MedialMesh& mesh = result.Mesh;
+  const std::vector<EdgeKey> edges = AllEdges(mesh);
+  std::vector<char> across(edges.size(), 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 512),
+    [&](const tbb::blocked_range<std::size_t>& r)
+    {
+      for (std::size_t e = r.begin(); e != r.end(); ++e)
+      {
+        // The open segment: an end may lie on the surface (radius 0).
+        const Point3 &a = mesh.Centers[edges[e][0]], &b = mesh.Centers[edges[e][1]];
+        across[e] = queries.Crosses(a + 1e-6 * (b - a), b - 1e-6 * (b - a)) ? 1 : 0;
+      }
+    });
+  const std::size_t count = static_cast<std::size_t>(std::count(across.begin(), across.end(), 1));
+  if (count == 0)
+  {
+    return 0;
+  }
+  auto isAcross = [&](Index a, Index b) { return across[EdgeId(edges, a, b)] != 0; };
+  std::size_t out = 0;
+  for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
+  {
+    const auto& t = mesh.Faces[f];
+    if (!isAcross(t[0], t[1]) && !isAcross(t[1], t[2]) && !isAcross(t[2], t[0]))
+    {
+      mesh.Faces[out] = t;
+      result.FaceSitePair[out] = result.FaceSitePair[f];
+      ++out;
+    }
+  }
+  mesh.Faces.resize(out);
+  result.FaceSitePair.resize(out);
+  mesh.Edges.erase(std::remove_if(mesh.Edges.begin(), mesh.Edges.end(),
+                     [&](const std::array<Index, 2>& e) { return isAcross(e[0], e[1]); }),
+    mesh.Edges.end());
+  DropSmallComponents(result, std::max<std::size_t>(2, mesh.Centers.size() / 1000));
+  return count;
+}
+
+// 1. Pieces beyond the expected count are joined as in Kruskal's algorithm:
+// of the pairs of close vertices in different pieces, shortest first, each
+// whose segment stays inside the surface joins its two pieces.
+std::size_t JoinPieces(
+  VoronoiMedialAxisResult& result, std::size_t expected, const TopologyRepairQueries& queries)
+{
+  MedialMesh& mesh = result.Mesh;
+  const std::size_t nv = mesh.Centers.size();
+  DisjointSets pieces(nv);
+  for (const EdgeKey& e : AllEdges(mesh))
+  {
+    pieces.Union(e[0], e[1]);
+  }
+  std::vector<std::size_t> size(nv, 0);
+  std::size_t pieceCount = 0;
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    const Index root = pieces.Find(static_cast<Index>(v));
+    pieceCount += root == static_cast<Index>(v) ? 1 : 0;
+    ++size[root];
+  }
+  if (pieceCount <= expected)
+  {
+    return 0;
+  }
+  const Index largest =
+    static_cast<Index>(std::max_element(size.begin(), size.end()) - size.begin());
+  std::map<Index, std::vector<Index>> smaller; // every other piece, by root (its smallest id)
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    const Index root = pieces.Find(static_cast<Index>(v));
+    if (root != largest)
+    {
+      smaller[root].push_back(static_cast<Index>(v));
+    }
+  }
+  // For each smaller piece, the nearest vertices of all the others.
+  // The closest vertices of other pieces are often in a neighbouring part,
+  // across the surface: look a little further.
+  constexpr std::size_t neighbours = 64; // candidates per vertex of a smaller piece
+  std::vector<std::tuple<double, Index, Index>> pairs;
+  std::vector<std::uint32_t> ids;
+  std::vector<double> d2;
+  std::vector<Point3> others;
+  std::vector<Index> otherId;
+  for (const auto& [root, members] : smaller)
+  {
+    others.clear();
+    otherId.clear();
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      if (pieces.Find(static_cast<Index>(v)) != root)
+      {
+        others.push_back(mesh.Centers[v]);
+        otherId.push_back(static_cast<Index>(v));
+      }
+    }
+    const KdTree tree(others);
+    for (Index v : members)
+    {
+      tree.Nearest(mesh.Centers[v], neighbours, ids, d2);
+      for (std::size_t k = 0; k < ids.size(); ++k)
+      {
+        const Index w = otherId[ids[k]];
+        pairs.emplace_back(d2[k], std::min(v, w), std::max(v, w));
+      }
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  std::size_t joined = 0;
+  for (const auto& [length2, v, w] : pairs)
+  {
+    if (pieceCount <= expected)
+    {
+      break;
+    }
+    if (pieces.Find(v) != pieces.Find(w) && !queries.Crosses(mesh.Centers[v], mesh.Centers[w]))
+    {
+      pieces.Union(v, w);
+      mesh.Edges.push_back({ v, w });
+      --pieceCount;
+      ++joined;
+    }
+  }
+  return joined;
+}
+
+// Length of the shortest path from `from` to `to` that does not use edge
+// `skip`, or infinity; gives up beyond `bound`. With `path`, also the path,
+// from `to` back to `from` (`previous`: scratch, one entry per vertex).
+double ShortestDetour(const std::vector<std::size_t>& start, const std::vector<Index>& adjacentEdge,
+  const std::vector<EdgeKey>& edges, const std::vector<double>& length, Index from, Index to,
+  std::size_t skip, double bound, std::vector<double>& distance, std::vector<Index>& touched,
+  std::vector<Index>* path = nullptr, std::vector<Index>* previous = nullptr)
+{
+  using Item = std::pair<double, Index>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  distance[from] = 0.0;
+  touched.push_back(from);
+  queue.push({ 0.0, from });
+  double found = std::numeric_limits<double>::infinity();
+  while (!queue.empty())
+  {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[v] || d >= bound)
+    {
+      if (d >= bound)
+      {
+        break;
+      }
+      continue;
+    }
+    if (v == to)
+    {
+      found = d;
+      if (path)
+      {
+        path->assign(1, to);
+        while (path->back() != from)
+        {
+          path->push_back((*previous)[path->back()]);
+        }
+      }
+      break;
+    }
+    for (std::size_t k = start[v]; k < start[v + 1]; ++k)
+    {
+      const std::size_t e = static_cast<std::size_t>(adjacentEdge[k]);
+      if (e == skip)
+      {
+        continue;
+      }
+      const Index w = edges[e][0] == v ? edges[e][1] : edges[e][0];
+      const double dw = d + length[e];
+      if (dw < distance[w])
+      {
+        if (distance[w] == std::numeric_limits<double>::infinity())
+        {
+          touched.push_back(w);
+        }
+        distance[w] = dw;
+        if (previous)
+        {
+          (*previous)[w] = v;
+        }
+        queue.push({ dw, w });
+      }
+    }
+  }
+  for (Index v : touched)
+  {
+    distance[v] = std::numeric_limits<double>::infinity();
+  }
+  touched.clear();
+  return found;
+}
+
+// Per edge: 1 if removing it disconnects its piece (Tarjan's low-link,
+// iterative).
+std::vector<char> Bridges(std::size_t nv, const std::vector<std::size_t>& start,
+  const std::vector<Index>& adjacentEdge, const std::vector<EdgeKey>& edges)
+{
+  std::vector<char> bridge(edges.size(), 0);
+  std::vector<int> order(nv, -1), low(nv, 0);
+  // Stack frames: vertex, the edge it was reached by, next adjacency slot.
+  std::vector<std::tuple<Index, Index, std::size_t>> stack;
+  int time = 0;
+  for (std::size_t root = 0; root < nv; ++root)
+  {
+    if (order[root] >= 0)
+    {
+      continue;
+    }
+    order[root] = low[root] = time++;
+    stack.emplace_back(static_cast<Index>(root), -1, start[root]);
+    while (!stack.empty())
+    {
+      auto& [v, via, slot] = stack.back();
+      if (slot < start[v + 1])
+      {
+        const Index e = adjacentEdge[slot++];
+        if (e == via)
+        {
+          continue;
+        }
+        const Index w = edges[e][0] == v ? edges[e][1] : edges[e][0];
+        if (order[w] < 0)
+        {
+          order[w] = low[w] = time++;
+          stack.emplace_back(w, e, start[w]);
+        }
+        else
+        {
+          low[v] = std::min(low[v], order[w]);
+        }
+        continue;
+      }
+      const Index child = v, edge = via;
+      stack.pop_back();
+      if (!stack.empty())
+      {
+        const Index parent = std::get<0>(stack.back());
+        low[parent] = std::min(low[parent], low[child]);
+        bridge[edge] = low[child] > order[parent] ? 1 : 0;
+      }
+    }
+  }
+  return bridge;
+}
+
+// 2. Removes the face-less edge on the shortest loop, `excess` times at most.
+std::size_t CutLoops(MedialMesh& mesh, long long excess)
+{
+  std::size_t cut = 0;
+  std::vector<double> distance(mesh.Centers.size(), std::numeric_limits<double>::infinity());
+  std::vector<Index> touched;
+  for (; excess > 0; --excess)
+  {
+    const std::vector<EdgeKey> lines = EdgesNotOnFaces(mesh);
+    if (lines.empty())
+    {
+      break;
+    }
+    const std::vector<EdgeKey> edges = AllEdges(mesh);
+    const std::size_t nv = mesh.Centers.size();
+    std::vector<std::size_t> start(nv + 1, 0);
+    for (const EdgeKey& e : edges)
+    {
+      ++start[e[0] + 1];
+      ++start[e[1] + 1];
+    }
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      start[v + 1] += start[v];
+    }
+    std::vector<Index> adjacentEdge(start[nv]);
+    std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
+    std::vector<double> length(edges.size());
+    for (std::size_t e = 0; e < edges.size(); ++e)
+    {
+      adjacentEdge[cursor[edges[e][0]]++] = static_cast<Index>(e);
+      adjacentEdge[cursor[edges[e][1]]++] = static_cast<Index>(e);
+      length[e] = Norm(mesh.Centers[edges[e][0]] - mesh.Centers[edges[e][1]]);
+    }
+    double best = std::numeric_limits<double>::infinity();
+    EdgeKey bestLine{ -1, -1 };
+    const std::vector<char> bridge = Bridges(nv, start, adjacentEdge, edges);
+    for (const EdgeKey& line : lines)
+    {
+      const std::size_t id = EdgeId(edges, line[0], line[1]);
+      if (bridge[id])
+      {
+        continue; // on no loop
+      }
+      const double loop = length[id] +
+        ShortestDetour(start, adjacentEdge, edges, length, line[0], line[1], id, best - length[id],
+          distance, touched);
+      if (loop < best)
+      {
+        best = loop;
+        bestLine = line;
+      }
+    }
+    if (bestLine[0] < 0)
+    {
+      break; // every face-less edge is a bridge
+    }
+    mesh.Edges.erase(std::remove_if(mesh.Edges.begin(), mesh.Edges.end(),
+                       [&](const std::array<Index, 2>& e) { return Key(e[0], e[1]) == bestLine; }),
+      mesh.Edges.end());
+    ++cut;
+  }
+  return cut;
+}
+
+// Cycles of sheet-boundary edges, shortest first.
+std::vector<std::vector<Index>> BoundaryLoops(const MedialMesh& mesh)
+{
+  const std::vector<EdgeKey> boundary = SheetBoundaryEdges(mesh);
+  std::vector<std::vector<Index>> next(mesh.Centers.size());
+  for (const EdgeKey& e : boundary)
+  {
+    next[e[0]].push_back(e[1]);
+    next[e[1]].push_back(e[0]);
+  }
+  // Boundary curves often run on from a hole's rim to a seam: prune such
+  // open ends, leaf by leaf, down to the cycles.
+  std::vector<Index> leaves;
+  for (const EdgeKey& e : boundary)
+  {
+    for (Index v : e)
+    {
+      if (next[v].size() == 1)
+      {
+        leaves.push_back(v);
+      }
+    }
+  }
+  while (!leaves.empty())
+  {
+    const Index leaf = leaves.back();
+    leaves.pop_back();
+    std::vector<Index>& around = next[leaf];
+    if (around.size() != 1)
+    {
+      continue;
+    }
+    std::vector<Index>& other = next[around[0]];
+    other.erase(std::find(other.begin(), other.end(), leaf));
+    if (other.size() == 1)
+    {
+      leaves.push_back(around[0]);
+    }
+    around.clear();
+  }
+  // One cycle per edge left out of a breadth-first spanning tree of each
+  // piece (its fundamental cycles): a plain loop gives itself, loops that
+  // share vertices give each of them.
+  std::vector<std::pair<double, std::vector<Index>>> loops;
+  std::vector<Index> parent(mesh.Centers.size(), -2); // -2: not reached
+  std::vector<int> depth(mesh.Centers.size(), 0);
+  for (const EdgeKey& e : boundary)
+  {
+    const Index root = e[0];
+    if (next[root].empty() || parent[root] != -2)
+    {
+      continue;
+    }
+    std::vector<Index> order{ root };
+    parent[root] = -1;
+    depth[root] = 0;
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+      for (Index w : next[order[k]])
+      {
+        if (parent[w] == -2)
+        {
+          parent[w] = order[k];
+          depth[w] = depth[order[k]] + 1;
+          order.push_back(w);
+        }
+      }
+    }
+    for (Index u : order)
+    {
+      for (Index w : next[u])
+      {
+        if (u > w || parent[u] == w || parent[w] == u)
+        {
+          continue; // each non-tree edge once
+        }
+        std::vector<Index> fromU{ u }, fromW{ w };
+        while (fromU.back() != fromW.back())
+        {
+          std::vector<Index>& deeper = depth[fromU.back()] >= depth[fromW.back()] ? fromU : fromW;
+          deeper.push_back(parent[deeper.back()]);
+        }
+        fromW.pop_back(); // the common ancestor, once
+        std::vector<Index> loop(fromU.begin(), fromU.end());
+        loop.insert(loop.end(), fromW.rbegin(), fromW.rend());
+        double perimeter = 0.0;
+        for (std::size_t k = 0; k < loop.size(); ++k)
+        {
+          perimeter += Norm(mesh.Centers[loop[k]] - mesh.Centers[loop[(k + 1) % loop.size()]]);
+        }
+        if (loop.size() >= 3)
+        {
+          loops.emplace_back(perimeter, std::move(loop));
+        }
+      }
+    }
+  }
+  std::sort(loops.begin(), loops.end());
+  std::vector<std::vector<Index>> sorted;
+  for (auto& loop : loops)
+  {
+    sorted.push_back(std::move(loop.second));
+  }
+  return sorted;
+}
+
+// Whether a cap would close a void: peeling (removing, until none is left,
+// every triangle with an edge on no other live triangle) leaves exactly the
+// triangles of the complex's closed surfaces and of what they pin down, so a
+// cap that survives it closes one. The complex's incidences are built once;
+// each cap is peeled with them from scratch, as peeling is not incremental.
+class CapPeeler
+{
+public:
+  explicit CapPeeler(const MedialMesh& mesh)
+    : Edges(AllEdges(mesh))
+    , FaceEdges(mesh.Faces.size())
+    , BaseCount(this->Edges.size(), 0)
+    , Start(this->Edges.size() + 1, 0)
+  {
+    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
+    {
+      const auto& t = mesh.Faces[f];
+      for (int k = 0; k < 3; ++k)
+      {
+        this->FaceEdges[f][k] = EdgeId(this->Edges, t[k], t[(k + 1) % 3]);
+        ++this->BaseCount[this->FaceEdges[f][k]];
+      }
+    }
+    for (std::size_t e = 0; e < this->Edges.size(); ++e)
+    {
+      this->Start[e + 1] = this->Start[e] + static_cast<std::size_t>(this->BaseCount[e]);
+    }
+    this->EdgeFaces.resize(this->Start.back());
+    std::vector<std::size_t> cursor(this->Start.begin(), this->Start.end() - 1);
+    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
+    {
+      for (std::size_t e : this->FaceEdges[f])
+      {
+        this->EdgeFaces[cursor[e]++] = static_cast<Index>(f);
+      }
+    }
+  }
+
+  /// True when the fan from a new vertex over the closed `loop` (of edges
+  /// of the complex) would survive peeling.
+  bool CapClosesVoid(const std::vector<Index>& loop) const
+  {
+    if (this->BoundsSmallPatch(loop))
+    {
+      return true;
+    }
+    const std::size_t nf = this->FaceEdges.size(), ne = this->Edges.size(), n = loop.size();
+    // Cap face k: hub, loop[k], loop[k + 1]; its edges: the loop edge and
+    // spokes k and k + 1 (ids ne + k).
+    std::vector<std::array<std::size_t, 3>> capEdges(n);
+    std::vector<int> count(this->BaseCount);
+    count.resize(ne + n, 2);
+    std::vector<std::pair<std::size_t, Index>> loopEdgeCap(n); // sorted: edge -> cap face
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const std::size_t e = EdgeId(this->Edges, loop[k], loop[(k + 1) % n]);
+      capEdges[k] = { e, ne + k, ne + (k + 1) % n };
+      ++count[e];
+      loopEdgeCap[k] = { e, static_cast<Index>(nf + k) };
+    }
+    std::sort(loopEdgeCap.begin(), loopEdgeCap.end());
+    auto edgesOf = [&](std::size_t f) -> const std::array<std::size_t, 3>&
+    { return f < nf ? this->FaceEdges[f] : capEdges[f - nf]; };
+    std::vector<char> alive(nf + n, 1);
+    auto isFree = [&](std::size_t f)
+    {
+      const auto& e = edgesOf(f);
+      return count[e[0]] == 1 || count[e[1]] == 1 || count[e[2]] == 1;
+    };
+    std::vector<Index> stack;
+    for (std::size_t f = 0; f < nf + n; ++f)
+    {
+      if (isFree(f))
+      {
+        stack.push_back(static_cast<Index>(f));
+      }
+    }
+    auto pushFacesOf = [&](std::size_t e)
+    {
+      if (e >= ne) // a spoke: the cap faces on either side
+      {
+        const std::size_t k = e - ne;
+        stack.push_back(static_cast<Index>(nf + k));
+        stack.push_back(static_cast<Index>(nf + (k + n - 1) % n));
+        return;
+      }
+      for (std::size_t i = this->Start[e]; i < this->Start[e + 1]; ++i)
+      {
+        stack.push_back(this->EdgeFaces[i]);
+      }
+      const auto cap = std::lower_bound(loopEdgeCap.begin(), loopEdgeCap.end(),
+        std::pair<std::size_t, Index>{ e, std::numeric_limits<Index>::min() });
+      if (cap != loopEdgeCap.end() && cap->first == e)
+      {
+        stack.push_back(cap->second);
+      }
+    };
+    while (!stack.empty())
+    {
+      const std::size_t f = static_cast<std::size_t>(stack.back());
+      stack.pop_back();
+      if (!alive[f] || !isFree(f))
+      {
+        continue;
+      }
+      alive[f] = 0;
+      for (std::size_t e : edgesOf(f))
+      {
+        if (--count[e] == 1)
+        {
+          pushFacesOf(e);
+        }
+      }
+    }
+    return std::any_of(
+      alive.begin() + static_cast<std::ptrdiff_t>(nf), alive.end(), [](char a) { return a != 0; });
+  }
+
+private:
+  // The quick answer for most loops that are not holes: the rim of a small
+  // flap, a patch of triangles (joined across edges on exactly two) whose
+  // only free edges are the loop's. False when unsure.
+  bool BoundsSmallPatch(const std::vector<Index>& loop) const
+  {
+    constexpr std::size_t limit = 64; // triangles; beyond, peeling decides
+    std::vector<std::size_t> rim;
+    for (std::size_t k = 0; k < loop.size(); ++k)
+    {
+      rim.push_back(EdgeId(this->Edges, loop[k], loop[(k + 1) % loop.size()]));
+      if (this->BaseCount[rim.back()] != 1)
+      {
+        return false;
+      }
+    }
+    std::sort(rim.begin(), rim.end());
+    std::vector<Index> patch{ this->EdgeFaces[this->Start[rim[0]]] };
+    for (std::size_t k = 0; k < patch.size(); ++k)
+    {
+      for (std::size_t e : this->FaceEdges[patch[k]])
+      {
+        if (std::binary_search(rim.begin(), rim.end(), e))
+        {
+          continue;
+        }
+        if (this->BaseCount[e] != 2)
+        {
+          return false;
+        }
+        for (std::size_t i = this->Start[e]; i < this->Start[e + 1]; ++i)
+        {
+          const Index f = this->EdgeFaces[i];
+          if (std::find(patch.begin(), patch.end(), f) == patch.end())
+          {
+            if (patch.size() == limit)
+            {
+              return false;
+            }
+            patch.push_back(f);
+          }
+        }
+      }
+    }
+    // Closed up: every rim edge must be on the patch, or the loop bounds
+    // more than one patch and is not that simple.
+    return std::all_of(rim.begin(), rim.end(),
+      [&](std::size_t e) {
+        return std::find(patch.begin(), patch.end(), this->EdgeFaces[this->Start[e]]) !=
+          patch.end();
+      });
+  }
+
+  std::vector<EdgeKey> Edges;
+  std::vector<std::array<std::size_t, 3>> FaceEdges;
+  std::vector<int> BaseCount;
+  std::vector<std::size_t> Start; // edge -> faces, compressed rows
+  std::vector<Index> EdgeFaces;
+};
+
+// The complex collapsed to a graph: triangles go with a free edge of theirs
+// (an elementary collapse), then edges with a free end. Its cycles are the
+// complex's independent loops; for each edge left out of a spanning tree of
+// it, the shortest cycle through that edge, shortest first. Empty when the
+// complex does not collapse to a graph.
+std::vector<std::vector<Index>> CoreCycles(const MedialMesh& mesh)
+{
+  const std::vector<EdgeKey> edges = AllEdges(mesh);
+  const std::size_t nf = mesh.Faces.size(), ne = edges.size(), nv = mesh.Centers.size();
+  std::vector<std::array<std::size_t, 3>> faceEdges(nf);
+  std::vector<int> count(ne, 0);
+  std::vector<std::size_t> start(ne + 1, 0);
+  for (std::size_t f = 0; f < nf; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      faceEdges[f][k] = EdgeId(edges, mesh.Faces[f][k], mesh.Faces[f][(k + 1) % 3]);
+      ++count[faceEdges[f][k]];
+      ++start[faceEdges[f][k] + 1];
+    }
+  }
+  for (std::size_t e = 0; e < ne; ++e)
+  {
+    start[e + 1] += start[e];
+  }
+  std::vector<Index> edgeFaces(start.back());
+  {
+    std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < nf; ++f)
+    {
+      for (std::size_t e : faceEdges[f])
+      {
+        edgeFaces[cursor[e]++] = static_cast<Index>(f);
+      }
+    }
+  }
+  std::vector<char> faceAlive(nf, 1), edgeAlive(ne, 1);
+  std::vector<Index> stack(nf);
+  for (std::size_t f = 0; f < nf; ++f)
+  {
+    stack[f] = static_cast<Index>(nf - 1 - f);
+  }
+  std::size_t facesLeft = nf;
+  while (!stack.empty())
+  {
+    const Index f = stack.back();
+    stack.pop_back();
+    if (!faceAlive[f])
+    {
+      continue;
+    }
+    const auto freeEdge = std::find_if(
+      faceEdges[f].begin(), faceEdges[f].end(), [&](std::size_t e) { return count[e] == 1; });
+    if (freeEdge == faceEdges[f].end())
+    {
+      continue;
+    }
+    faceAlive[f] = 0;
+    edgeAlive[*freeEdge] = 0;
+    --facesLeft;
+    for (std::size_t e : faceEdges[f])
+    {
+      if (--count[e] == 1)
+      {
+        for (std::size_t i = start[e]; i < start[e + 1]; ++i)
+        {
+          if (faceAlive[edgeFaces[i]])
+          {
+            stack.push_back(edgeFaces[i]);
+          }
+        }
+      }
+    }
+  }
+  if (facesLeft > 0)
+  {
+    return {}; // a closed surface (or a dunce hat): not a graph
+  }
+  // Prune free ends.
+  std::vector<int> degree(nv, 0);
+  std::vector<std::vector<std::size_t>> around(nv);
+  for (std::size_t e = 0; e < ne; ++e)
+  {
+    if (edgeAlive[e])
+    {
+      for (Index v : edges[e])
+      {
+        ++degree[v];
+        around[v].push_back(e);
+      }
+    }
+  }
+  std::vector<Index> ends;
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    if (degree[v] == 1)
+    {
+      ends.push_back(static_cast<Index>(v));
+    }
+  }
+  while (!ends.empty())
+  {
+    const Index v = ends.back();
+    ends.pop_back();
+    for (std::size_t e : around[v])
+    {
+      if (edgeAlive[e])
+      {
+        edgeAlive[e] = 0;
+        --degree[v];
+        const Index w = edges[e][0] == v ? edges[e][1] : edges[e][0];
+        if (--degree[w] == 1)
+        {
+          ends.push_back(w);
+        }
+      }
+    }
+  }
+  // The graph, as compressed rows over all vertex ids.
+  std::vector<EdgeKey> graph;
+  for (std::size_t e = 0; e < ne; ++e)
+  {
+    if (edgeAlive[e])
+    {
+      graph.push_back(edges[e]);
+    }
+  }
+  std::vector<std::size_t> rowStart(nv + 1, 0);
+  for (const EdgeKey& e : graph)
+  {
+    ++rowStart[e[0] + 1];
+    ++rowStart[e[1] + 1];
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    rowStart[v + 1] += rowStart[v];
+  }
+  std::vector<Index> adjacentEdge(rowStart[nv]);
+  std::vector<double> length(graph.size());
+  {
+    std::vector<std::size_t> cursor(rowStart.begin(), rowStart.end() - 1);
+    for (std::size_t e = 0; e < graph.size(); ++e)
+    {
+      adjacentEdge[cursor[graph[e][0]]++] = static_cast<Index>(e);
+      adjacentEdge[cursor[graph[e][1]]++] = static_cast<Index>(e);
+      length[e] = Norm(mesh.Centers[graph[e][0]] - mesh.Centers[graph[e][1]]);
+    }
+  }
+  // Edges left out of a breadth-first spanning forest.
+  std::vector<char> reached(nv, 0), inTree(graph.size(), 0);
+  for (const EdgeKey& root : graph)
+  {
+    if (reached[root[0]])
+    {
+      continue;
+    }
+    std::vector<Index> queue{ root[0] };
+    reached[root[0]] = 1;
+    for (std::size_t k = 0; k < queue.size(); ++k)
+    {
+      const Index v = queue[k];
+      for (std::size_t i = rowStart[v]; i < rowStart[v + 1]; ++i)
+      {
+        const Index e = adjacentEdge[i];
+        const Index w = graph[e][0] == v ? graph[e][1] : graph[e][0];
+        if (!reached[w])
+        {
+          reached[w] = 1;
+          inTree[e] = 1;
+          queue.push_back(w);
+        }
+      }
+    }
+  }
+  std::vector<std::pair<double, std::vector<Index>>> cycles;
+  std::vector<double> distance(nv, std::numeric_limits<double>::infinity());
+  std::vector<Index> touched, previous(nv, -1), path;
+  for (std::size_t e = 0; e < graph.size(); ++e)
+  {
+    if (inTree[e])
+    {
+      continue;
+    }
+    const double detour = ShortestDetour(rowStart, adjacentEdge, graph, length, graph[e][0],
+      graph[e][1], e, std::numeric_limits<double>::infinity(), distance, touched, &path, &previous);
+    if (detour < std::numeric_limits<double>::infinity() && path.size() >= 3)
+    {
+      cycles.emplace_back(detour + length[e], path);
+    }
+  }
+  std::sort(cycles.begin(), cycles.end());
+  std::vector<std::vector<Index>> sorted;
+  for (auto& cycle : cycles)
+  {
+    sorted.push_back(std::move(cycle.second));
+  }
+  return sorted;
+}
+
+// 3. Caps `loops` (closed chains of edges of the complex), in order, where
+// the cap is inside the surface and closes no void, `excess` times at most.
+std::size_t CapLoops(VoronoiMedialAxisResult& result, const std::vector<std::vector<Index>>& loops,
+  long long excess, const TopologyRepairQueries& queries)
+{
+  MedialMesh& mesh = result.Mesh;
+  std::size_t filled = 0;
+  std::unique_ptr<CapPeeler> peeler; // built on the first cap that needs it
+  std::vector<EdgeKey> capped;       // edges of caps so far, sorted
+  for (const std::vector<Index>& loop : loops)
+  {
+    if (excess <= 0)
+    {
+      break;
+    }
+    bool open = true; // loops can share edges with a capped one
+    for (std::size_t k = 0; open && k < loop.size(); ++k)
+    {
+      open = !std::binary_search(
+        capped.begin(), capped.end(), Key(loop[k], loop[(k + 1) % loop.size()]));
+    }
+    if (!open)
+    {
+      continue;
+    }
+    Point3 centre{ 0.0, 0.0, 0.0 };
+    for (Index v : loop)
+    {
+      centre = centre + mesh.Centers[v];
+    }
+    centre = (1.0 / static_cast<double>(loop.size())) * centre;
+    if (!queries.Inside(centre) ||
+      std::any_of(loop.begin(), loop.end(),
+        [&](Index v) { return queries.Crosses(centre, mesh.Centers[v]); }))
+    {
+      continue;
+    }
+    if (!peeler)
+    {
+      peeler = std::make_unique<CapPeeler>(mesh);
+    }
+    if (peeler->CapClosesVoid(loop))
+    {
+      continue;
+    }
+    const Index hub = static_cast<Index>(mesh.Centers.size());
+    for (std::size_t k = 0; k < loop.size(); ++k)
+    {
+      mesh.Faces.push_back({ hub, loop[k], loop[(k + 1) % loop.size()] });
+    }
+    peeler.reset(); // the complex changed: rebuilt when next needed
+    for (std::size_t k = 0; k < loop.size(); ++k)
+    {
+      capped.push_back(Key(loop[k], loop[(k + 1) % loop.size()]));
+    }
+    std::sort(capped.begin(), capped.end());
+    AppendVertex(result, centre, queries.Distance(centre), loop);
+    result.FaceSitePair.resize(mesh.Faces.size(), { -1, -1 });
+    ++filled;
+    --excess;
+  }
+  return filled;
+}
+}
+
+SurfaceTopology ComputeSurfaceTopology(const TriangleMesh& surface)
+{
+  const std::size_t np = surface.Points.size();
+  DisjointSets pieces(np);
+  std::vector<char> used(np, 0);
+  std::vector<EdgeKey> edges;
+  for (const Triangle& t : surface.Triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      used[t[k]] = 1;
+      pieces.Union(t[k], t[(k + 1) % 3]);
+      edges.push_back(Key(t[k], t[(k + 1) % 3]));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::map<Index, long long> euler; // per piece: V - E + F
+  for (std::size_t p = 0; p < np; ++p)
+  {
+    if (used[p])
+    {
+      ++euler[pieces.Find(static_cast<Index>(p))];
+    }
+  }
+  for (const EdgeKey& e : edges)
+  {
+    --euler[pieces.Find(e[0])];
+  }
+  for (const Triangle& t : surface.Triangles)
+  {
+    ++euler[pieces.Find(t[0])];
+  }
+  SurfaceTopology topology;
+  topology.Components = euler.size();
+  for (const auto& piece : euler)
+  {
+    topology.Genus += std::max(0LL, (2 - piece.second) / 2);
+  }
+  return topology;
+}
+
+TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,
+  const SurfaceTopology& expected, const TopologyRepairQueries& queries)
+{
+  TopologyRepairCounts counts;
+  if (result.Mesh.Centers.empty())
+  {
+    return counts;
+  }
+  counts.EdgesAcrossSurface = DropEdgesAcrossSurface(result, queries);
+  counts.JoinedPieces = JoinPieces(result, std::max<std::size_t>(1, expected.Components), queries);
+  const long long excess = CountLoops(result.Mesh) - expected.Genus;
+  counts.CutLoops = CutLoops(result.Mesh, excess);
+  // Holes in sheets first; then loops of any shape, e.g. round a tube.
+  long long left = excess - static_cast<long long>(counts.CutLoops);
+  counts.FilledHoles = CapLoops(result, BoundaryLoops(result.Mesh), left, queries);
+  left -= static_cast<long long>(counts.FilledHoles);
+  if (left > 0)
+  {
+    counts.FilledHoles += CapLoops(result, CoreCycles(result.Mesh), left, queries);
+  }
+  return counts;
+}
+}

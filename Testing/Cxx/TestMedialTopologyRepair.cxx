@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The topology repair of the initial medial mesh on small hand-built
+// complexes whose defects are known: a tube (one spurious loop round a
+// hole), a loop of face-less edges, a piece cut off, an edge bridging two
+// solids, and a sheet whose rim must not be capped into a closed bubble.
+#include "Geometry/Vec3.h"
+#include "Mesh/MedialMesh.h"
+#include "Surface/AnalyticShapes.h"
+#include "Voronoi/MedialTopologyRepair.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace medialaxis;
+
+namespace
+{
+// A ball of radius 10 round the origin stands for the solid.
+TopologyRepairQueries BigBall()
+{
+  return { [](const Point3& p) { return Norm(p) < 10.0; },
+    [](const Point3& p) { return 10.0 - Norm(p); },
+    [](const Point3&, const Point3&) { return false; } };
+}
+
+// Adds vertices with radius 0.1 and one Atlas site each.
+Index AddVertex(VoronoiMedialAxisResult& result, const Point3& p)
+{
+  result.Mesh.Centers.push_back(p);
+  result.Mesh.Radii.push_back(0.1);
+  result.AtlasSites.push_back(static_cast<Index>(result.AtlasSites.size()));
+  result.AtlasOffsets.push_back(static_cast<Index>(result.AtlasSites.size()));
+  return static_cast<Index>(result.Mesh.Centers.size() - 1);
+}
+
+void AddFace(VoronoiMedialAxisResult& result, Index a, Index b, Index c)
+{
+  result.Mesh.Faces.push_back({ a, b, c });
+  result.FaceSitePair.push_back({ a, b });
+}
+
+// An open tube of `n` quads round the z axis, z in [z0, z0 + 1], radius `r`:
+// Euler characteristic 0, one loop, two rims.
+void AddTube(VoronoiMedialAxisResult& result, int n, double r, double z0)
+{
+  std::vector<Index> low, high;
+  for (int k = 0; k < n; ++k)
+  {
+    const double a = 2.0 * 3.14159265358979 * k / n;
+    low.push_back(AddVertex(result, { r * std::cos(a), r * std::sin(a), z0 }));
+    high.push_back(AddVertex(result, { r * std::cos(a), r * std::sin(a), z0 + 1.0 }));
+  }
+  for (int k = 0; k < n; ++k)
+  {
+    const int j = (k + 1) % n;
+    AddFace(result, low[k], low[j], high[j]);
+    AddFace(result, low[k], high[j], high[k]);
+  }
+}
+
+// A flat disk, a fan of `n` triangles round `centre`, normal z.
+void AddDisk(VoronoiMedialAxisResult& result, int n, double r, const Point3& centre)
+{
+  const Index hub = AddVertex(result, centre);
+  std::vector<Index> rim;
+  for (int k = 0; k < n; ++k)
+  {
+    const double a = 2.0 * 3.14159265358979 * k / n;
+    rim.push_back(AddVertex(result, centre + Point3{ r * std::cos(a), r * std::sin(a), 0.0 }));
+  }
+  for (int k = 0; k < n; ++k)
+  {
+    AddFace(result, hub, rim[k], rim[(k + 1) % n]);
+  }
+}
+
+std::size_t Pieces(const MedialMesh& mesh)
+{
+  std::vector<Index> root(mesh.Centers.size());
+  for (std::size_t v = 0; v < root.size(); ++v)
+  {
+    root[v] = static_cast<Index>(v);
+  }
+  auto find = [&](Index v)
+  {
+    while (root[v] != v)
+    {
+      v = root[v] = root[root[v]];
+    }
+    return v;
+  };
+  for (const auto& e : AllEdges(mesh))
+  {
+    root[find(e[0])] = find(e[1]);
+  }
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < root.size(); ++v)
+  {
+    count += find(static_cast<Index>(v)) == static_cast<Index>(v) ? 1 : 0;
+  }
+  return count;
+}
+}
+
+TEST(SurfaceTopology, CountsPiecesAndHandles)
+{
+  const SurfaceTopology sphere = ComputeSurfaceTopology(MakeSphere(1.0, 16));
+  EXPECT_EQ(sphere.Components, 1u);
+  EXPECT_EQ(sphere.Genus, 0);
+  const SurfaceTopology torus = ComputeSurfaceTopology(MakeTorus(1.0, 0.3, 24));
+  EXPECT_EQ(torus.Components, 1u);
+  EXPECT_EQ(torus.Genus, 1);
+  TriangleMesh two = MakeSphere(1.0, 8);
+  const TriangleMesh other = MakeTorus(1.0, 0.3, 12);
+  const Index offset = static_cast<Index>(two.Points.size());
+  for (const Point3& p : other.Points)
+  {
+    two.Points.push_back(p + Point3{ 5.0, 0.0, 0.0 });
+  }
+  for (const Triangle& t : other.Triangles)
+  {
+    two.Triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+  const SurfaceTopology both = ComputeSurfaceTopology(two);
+  EXPECT_EQ(both.Components, 2u);
+  EXPECT_EQ(both.Genus, 1);
+}
+
+TEST(MedialTopologyRepair, CapsOneRimOfATubeInABall)
+{
+  VoronoiMedialAxisResult result;
+  AddTube(result, 12, 1.0, 0.0);
+  ASSERT_EQ(EulerCharacteristic(result.Mesh), 0);
+  const TopologyRepairCounts counts = RepairMedialTopology(result, { 1, 0 }, BigBall());
+  EXPECT_EQ(counts.FilledHoles, 1u);
+  EXPECT_EQ(counts.CutLoops, 0u);
+  EXPECT_EQ(EulerCharacteristic(result.Mesh), 1);
+  ASSERT_EQ(result.Mesh.Centers.size(), 25u);
+  // The cap's hub is the centre of one rim, its radius the distance to the surface.
+  const Point3& hub = result.Mesh.Centers.back();
+  EXPECT_NEAR(std::hypot(hub[0], hub[1]), 0.0, 1e-12);
+  EXPECT_NEAR(result.Mesh.Radii.back(), 10.0 - Norm(hub), 1e-12);
+  EXPECT_EQ(result.AtlasOffsets.size(), 26u);
+  EXPECT_EQ(result.AtlasOffsets.back() - result.AtlasOffsets[24], 12); // its rim's sites
+  EXPECT_EQ(result.FaceSitePair.size(), result.Mesh.Faces.size());
+  EXPECT_EQ(result.FaceSitePair.back()[0], -1);
+  EXPECT_TRUE(ValidateMedialMesh(result.Mesh).IsValid()) << ValidateMedialMesh(result.Mesh).Message;
+}
+
+TEST(MedialTopologyRepair, LeavesTheLoopOfAHandle)
+{
+  VoronoiMedialAxisResult result;
+  AddTube(result, 12, 1.0, 0.0);
+  const TopologyRepairCounts counts = RepairMedialTopology(result, { 1, 1 }, BigBall());
+  EXPECT_EQ(counts.FilledHoles + counts.CutLoops + counts.JoinedPieces, 0u);
+  EXPECT_EQ(EulerCharacteristic(result.Mesh), 0);
+}
+
+TEST(MedialTopologyRepair, NeverCapsARimIntoABubble)
+{
+  // A disk, whose rim is shorter than the tube's, joined to the tube: capping
+  // the disk's rim would close a void and leave the tube's loop. The tube's
+  // rim is capped.
+  VoronoiMedialAxisResult result;
+  AddTube(result, 12, 1.0, 0.0);
+  AddDisk(result, 6, 0.3, { 0.0, 0.0, 3.0 });
+  const TopologyRepairCounts counts = RepairMedialTopology(result, { 1, 0 }, BigBall());
+  EXPECT_EQ(counts.JoinedPieces, 1u);
+  EXPECT_EQ(counts.FilledHoles, 1u);
+  EXPECT_EQ(EulerCharacteristic(result.Mesh), 1);
+  const Point3& hub = result.Mesh.Centers.back();
+  EXPECT_NEAR(std::hypot(hub[0], hub[1]), 0.0, 1e-12);
+  EXPECT_LT(std::min(std::fabs(hub[2]), std::fabs(hub[2] - 1.0)), 1e-12)
+    << hub[2]; // a rim of the tube, not the disk's
+  EXPECT_TRUE(ValidateMedialMesh(result.Mesh).IsValid()) << ValidateMedialMesh(result.Mesh).Message;
+}
+
+TEST(MedialTopologyRepair, CutsTheShortestLoopOfEdgesOnly)
+{
+  // A disk with a triangle of face-less edges hanging off its hub: one
+  // spurious loop, opened by removing one of its edges.
+  VoronoiMedialAxisResult result;
+  AddDisk(result, 8, 1.0, { 0.0, 0.0, 0.0 });
+  const Index a = AddVertex(result, { 0.0, 0.0, 0.5 });
+  const Index b = AddVertex(result, { 0.2, 0.0, 0.7 });
+  result.Mesh.Edges = { { 0, a }, { 0, b }, { a, b } };
+  ASSERT_EQ(EulerCharacteristic(result.Mesh), 0);
+  const TopologyRepairCounts counts = RepairMedialTopology(result, { 1, 0 }, BigBall());
+  EXPECT_EQ(counts.CutLoops, 1u);
+  EXPECT_EQ(counts.FilledHoles, 0u);
+  EXPECT_EQ(result.Mesh.Edges.size(), 2u);
+  EXPECT_EQ(EulerCharacteristic(result.Mesh), 1);
+  EXPECT_EQ(Pieces(result.Mesh), 1u);
+}
+
+TEST(MedialTopologyRepair, JoinsAPieceCutOffInsideTheSolid)
+{
+  VoronoiMedialAxisResult result;
+  AddDisk(result, 8, 1.0, { 0.0, 0.0, 0.0 });
+  AddDisk(result, 8, 1.0, { 3.0, 0.0, 0.0 });
+  ASSERT_EQ(Pieces(result.Mesh), 2u);
+  const TopologyRepairCounts counts = RepairMedialTopology(result, { 1, 0 }, BigBall());
+  EXPECT_EQ(counts.JoinedPieces, 1u);
+  EXPECT_EQ(Pieces(result.Mesh), 1u);
+  EXPECT_EQ(EulerCharacteristic(result.Mesh), 1);
+  ASSERT_EQ(result.Mesh.Edges.size(), 1u);
+  // The closest pair: the disks' rims at x = 1 and x = 2.
+  EXPECT_NEAR(Norm(result.Mesh.Centers[result.Mesh.Edges[0][0]] -
+                result.Mesh.Centers[result.Mesh.Edges[0][1]]),
+    1.0, 1e-12);
+}
+
+TEST(MedialTopologyRepair, DropsAnEdgeBridgingTwoSolids)
+{
+  // Two balls of radius 1.5 at x = -2 and x = 2: a medial edge from one to
+  // the other leaves the solid and goes; the two pieces stay apart.
+  auto insideEither = [](const Point3& p) {
+    return Norm(p - Point3{ -2.0, 0.0, 0.0 }) < 1.5 || Norm(p - Point3{ 2.0, 0.0, 0.0 }) < 1.5;
+  };
+  const TopologyRepairQueries twoBalls{ insideEither,
+    [](const Point3& p) {
+      return 1.5 - std::min(Norm(p - Point3{ -2.0, 0.0, 0.0 }), Norm(p - Point3{ 2.0, 0.0, 0.0 }));
+    },
+    [insideEither](const Point3& a, const Point3& b)
+    {
+      for (int k = 0; k <= 1000; ++k)
+      {
+        if (!insideEither(a + (k / 1000.0) * (b - a)))
+        {
+          return true;
+        }
+      }
+      return false;
+    } };
+  VoronoiMedialAxisResult result;
+  AddDisk(result, 8, 0.5, { -2.0, 0.0, 0.0 });
+  AddDisk(result, 8, 0.5, { 2.0, 0.0, 0.0 });
+  result.Mesh.Edges = { { 0, 9 } }; // hub to hub
+  const TopologyRepairCounts counts = RepairMedialTopology(result, { 2, 0 }, twoBalls);
+  EXPECT_EQ(counts.EdgesAcrossSurface, 1u);
+  EXPECT_EQ(counts.JoinedPieces, 0u);
+  EXPECT_TRUE(result.Mesh.Edges.empty());
+  EXPECT_EQ(Pieces(result.Mesh), 2u);
+  EXPECT_EQ(result.Mesh.Faces.size(), 16u);
+}

@@ -35,32 +35,6 @@ std::size_t EdgeId(const std::vector<EdgeKey>& edges, Index a, Index b)
     std::lower_bound(edges.begin(), edges.end(), Key(a, b)) - edges.begin());
 }
 
-// Connected pieces of the complex, isolated vertices included.
-std::size_t CountPieces(const MedialMesh& mesh, const std::vector<EdgeKey>& edges)
-{
-  DisjointSets pieces(mesh.Centers.size());
-  for (const EdgeKey& e : edges)
-  {
-    pieces.Union(e[0], e[1]);
-  }
-  std::size_t count = 0;
-  for (std::size_t v = 0; v < mesh.Centers.size(); ++v)
-  {
-    count += pieces.Find(static_cast<Index>(v)) == static_cast<Index>(v) ? 1 : 0;
-  }
-  return count;
-}
-
-// First Betti number, taking the second as zero: the void-opening step
-// before this one leaves no enclosed void.
-long long CountLoops(const MedialMesh& mesh)
-{
-  const std::vector<EdgeKey> edges = AllEdges(mesh);
-  const long long euler = static_cast<long long>(mesh.Centers.size()) -
-    static_cast<long long>(edges.size()) + static_cast<long long>(mesh.Faces.size());
-  return static_cast<long long>(CountPieces(mesh, edges)) - euler;
-}
-
 void AppendVertex(VoronoiMedialAxisResult& result, const Point3& centre, double radius,
   const std::vector<Index>& neighbours)
 {
@@ -127,14 +101,16 @@ std::size_t DropEdgesAcrossSurface(
 
 // 1. Pieces beyond the expected count are joined as in Kruskal's algorithm:
 // of the pairs of close vertices in different pieces, shortest first, each
-// whose segment stays inside the surface joins its two pieces.
-std::size_t JoinPieces(
-  VoronoiMedialAxisResult& result, std::size_t expected, const TopologyRepairQueries& queries)
+// whose segment stays inside the surface joins its two pieces. Also gives
+// the number of loops left (pieces - Euler characteristic: no void is left).
+std::size_t JoinPieces(VoronoiMedialAxisResult& result, std::size_t expected,
+  const TopologyRepairQueries& queries, long long& loops)
 {
   MedialMesh& mesh = result.Mesh;
   const std::size_t nv = mesh.Centers.size();
   DisjointSets pieces(nv);
-  for (const EdgeKey& e : AllEdges(mesh))
+  const std::vector<EdgeKey> edges = AllEdges(mesh);
+  for (const EdgeKey& e : edges)
   {
     pieces.Union(e[0], e[1]);
   }
@@ -146,6 +122,10 @@ std::size_t JoinPieces(
     pieceCount += root == static_cast<Index>(v) ? 1 : 0;
     ++size[root];
   }
+  // Joining two pieces adds an edge: the loops stay as they are.
+  loops = static_cast<long long>(pieceCount) -
+    (static_cast<long long>(nv) - static_cast<long long>(edges.size()) +
+      static_cast<long long>(mesh.Faces.size()));
   if (pieceCount <= expected)
   {
     return 0;
@@ -885,6 +865,45 @@ std::vector<std::vector<Index>> CoreCycles(const MedialMesh& mesh)
   return sorted;
 }
 
+// The hub of a cap over `loop`: a point inside the surface from which every
+// loop vertex is seen without crossing it. The centroid, or failing that
+// (a loop bent round a concave part) the first point a third or two thirds
+// of the way from it to a loop vertex that is. False if none is.
+bool FindHub(const MedialMesh& mesh, const std::vector<Index>& loop,
+  const TopologyRepairQueries& queries, Point3& hub)
+{
+  Point3 centroid{ 0.0, 0.0, 0.0 };
+  for (Index v : loop)
+  {
+    centroid = centroid + mesh.Centers[v];
+  }
+  centroid = (1.0 / static_cast<double>(loop.size())) * centroid;
+  auto seesAll = [&](const Point3& p)
+  {
+    return queries.Inside(p) &&
+      std::none_of(
+        loop.begin(), loop.end(), [&](Index v) { return queries.Crosses(p, mesh.Centers[v]); });
+  };
+  if (seesAll(centroid))
+  {
+    hub = centroid;
+    return true;
+  }
+  for (Index v : loop)
+  {
+    for (double t : { 1.0 / 3.0, 2.0 / 3.0 })
+    {
+      const Point3 p = centroid + t * (mesh.Centers[v] - centroid);
+      if (seesAll(p))
+      {
+        hub = p;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 // 3. Caps `loops` (closed chains of edges of the complex), in order, where
 // the cap is inside the surface and closes no void, `excess` times at most.
 std::size_t CapLoops(VoronoiMedialAxisResult& result, const std::vector<std::vector<Index>>& loops,
@@ -910,15 +929,8 @@ std::size_t CapLoops(VoronoiMedialAxisResult& result, const std::vector<std::vec
     {
       continue;
     }
-    Point3 centre{ 0.0, 0.0, 0.0 };
-    for (Index v : loop)
-    {
-      centre = centre + mesh.Centers[v];
-    }
-    centre = (1.0 / static_cast<double>(loop.size())) * centre;
-    if (!queries.Inside(centre) ||
-      std::any_of(loop.begin(), loop.end(),
-        [&](Index v) { return queries.Crosses(centre, mesh.Centers[v]); }))
+    Point3 centre;
+    if (!FindHub(mesh, loop, queries, centre))
     {
       continue;
     }
@@ -1001,8 +1013,10 @@ TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,
     return counts;
   }
   counts.EdgesAcrossSurface = DropEdgesAcrossSurface(result, queries);
-  counts.JoinedPieces = JoinPieces(result, std::max<std::size_t>(1, expected.Components), queries);
-  const long long excess = CountLoops(result.Mesh) - expected.Genus;
+  long long loops = 0;
+  counts.JoinedPieces =
+    JoinPieces(result, std::max<std::size_t>(1, expected.Components), queries, loops);
+  const long long excess = loops - expected.Genus;
   counts.CutLoops = CutLoops(result.Mesh, excess);
   // Holes in sheets first; then loops of any shape, e.g. round a tube.
   long long left = excess - static_cast<long long>(counts.CutLoops);

@@ -67,7 +67,8 @@ Options:
   --samples N           surface samples (overrides the preset)
   --adaptive, --uniform sample thin parts (tentacles, ears, thin plates)
                         densely, by the local thickness, or the whole surface
-                        uniformly (default: uniform)
+                        uniformly (default: adaptive with the organic preset,
+                        uniform with cad)
   --target N            spheres left after simplification (overrides the preset)
   --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not
   --feature-angle DEG   dihedral tolerance for sharp edges (default 45)
@@ -141,7 +142,7 @@ struct Options
   std::string Input, OutputDir, Report, Screenshot;
   vtkIdType Samples = -1, Target = -1;
   int Sharp = -1; // -1: from the preset
-  bool Adaptive = false;
+  int Adaptive = -1; // -1: from the preset
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
        Fillets = false, SpikeCollapses = false, QMat = false, FinalFit = true,
        FitBoundaryRadii = false;
@@ -277,7 +278,7 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     }
     else if (arg == "--adaptive" || arg == "--uniform")
     {
-      o.Adaptive = arg == "--adaptive";
+      o.Adaptive = arg == "--adaptive" ? 1 : 0;
     }
     else if (arg == "--sharp" || arg == "--no-sharp")
     {
@@ -544,7 +545,10 @@ int main(int argc, char** argv)
   structural->SetStrategy(
     o.QMat ? vtkStructuralMedialAxis::QMat : vtkStructuralMedialAxis::Structural);
   structural->SetRandomSeed(o.Seed);
-  structural->SetAdaptiveSampling(o.Adaptive);
+  if (o.Adaptive >= 0)
+  {
+    structural->SetAdaptiveSampling(o.Adaptive == 1);
+  }
   structural->SetNumberOfThreads(o.Threads);
   structural->SetGenerateEnvelope(o.Envelope);
   structural->SetInputConnection(validator->GetOutputPort());

@@ -3,7 +3,7 @@
 //
 //   medialaxis-benchmark [--samples N] [--target V] [--cad] [--threads T] [--scaling]
 //                        [--counts N1,N2,...] [--envelope] [--error-samples S]
-//                        [--envelope-samples E] [--delaunay] [--adaptive] [--no-fit]
+//                        [--envelope-samples E] [--delaunay] [--adaptive|--uniform] [--no-fit]
 //                        [--shape torus|box|...] [--resolution R] mesh...
 //
 // Memory: the process's resident peak during each stage, and in brackets
@@ -19,8 +19,9 @@
 // vtkSlabReconstructor, poly data included) and "error" (reconstruction
 // error with S surface samples, default 100,000, and E envelope samples,
 // default the library's, 50,000).
-// --adaptive samples thin parts densely (SamplingOptions::Adaptive); the
-// sampling stage then includes the thickness rays.
+// --adaptive samples thin parts densely (SamplingOptions::Adaptive), the
+// default without --cad, as in the presets; the sampling stage then includes
+// the thickness rays. --uniform samples uniformly, the default with --cad.
 // --no-fit leaves out the simplifier's final fit (AtlasSimplifierOptions::
 // FinalFit), whose time is otherwise part of "simplify" and printed alone.
 // --delaunay also times CGAL's Delaunay triangulation of the same samples
@@ -157,7 +158,7 @@ bool LoadSurface(
 std::size_t TopologyGuard = AtlasSimplifierOptions().TopologyGuardVertexCount;
 bool Envelope = false;
 bool DelaunayBaseline = false;
-bool AdaptiveSampling = false;
+int AdaptiveSampling = -1; // -1: as the presets, adaptive unless --cad
 bool FinalFit = true;
 std::size_t ErrorSamples = 100000;
 std::size_t EnvelopeSamples = ReconstructionErrorOptions().NumberOfEnvelopeSamples;
@@ -211,7 +212,7 @@ std::vector<Stage> RunPipeline(
   SurfaceSamples sites;
   SamplingOptions sampling;
   sampling.NumberOfSamples = samples;
-  sampling.Adaptive = AdaptiveSampling;
+  sampling.Adaptive = AdaptiveSampling >= 0 ? AdaptiveSampling == 1 : !cad;
   stages.push_back(Measure("sampling", [&] { sites = SampleSurface(mesh, sampling); }));
   if (DelaunayBaseline)
   {
@@ -323,8 +324,8 @@ int main(int argc, char* argv[])
       Envelope = true;
     else if (arg == "--delaunay")
       DelaunayBaseline = true;
-    else if (arg == "--adaptive")
-      AdaptiveSampling = true;
+    else if (arg == "--adaptive" || arg == "--uniform")
+      AdaptiveSampling = arg == "--adaptive" ? 1 : 0;
     else if (arg == "--no-fit")
       FinalFit = false;
     else if (arg == "--error-samples" && i + 1 < argc)
@@ -350,7 +351,7 @@ int main(int argc, char* argv[])
       std::cout << "usage: " << argv[0]
                 << " [--samples N] [--target V] [--cad] [--threads T] [--scaling]"
                    " [--counts N1,N2,...] [--envelope] [--error-samples S]"
-                   " [--envelope-samples E] [--delaunay] [--adaptive] [--no-fit]"
+                   " [--envelope-samples E] [--delaunay] [--adaptive|--uniform] [--no-fit]"
                    " [--shape torus|sphere|box] [--resolution R] mesh...\n";
       return 0;
     }

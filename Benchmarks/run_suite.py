@@ -44,13 +44,14 @@ def read_sources(mesh_dir):
     return table
 
 
-# Options passed to every run of the tool (--adaptive).
+# Options passed to every run of the tool (--adaptive or --uniform).
 EXTRA_ARGS = []
 
 
 def run_tool(tool, mesh, out_dir, samples, target, cad, error, threads, strategy="structural"):
     report = os.path.join(out_dir, "report.json")
-    args = [tool, "--quiet", "--samples", str(samples), "--target", str(target),
+    args = [tool, "--quiet", "--preset", "cad" if cad else "organic",
+            "--samples", str(samples), "--target", str(target),
             "--sharp" if cad else "--no-sharp", "--threads", str(threads), "--envelope",
             "--strategy", strategy, "--report", report] + EXTRA_ARGS
     if error:
@@ -272,11 +273,17 @@ def main():
                         help="build folder with bin/medial-axis and bin/medialaxis-benchmark")
     parser.add_argument("--meshes", default=os.path.join(ROOT, "..", "shared", "data", "meshes"))
     parser.add_argument("--threads", type=int, default=0)
-    parser.add_argument("--adaptive", action="store_true",
-                        help="sample thin parts densely (medial-axis --adaptive)")
+    sampling = parser.add_mutually_exclusive_group()
+    sampling.add_argument("--adaptive", action="store_true",
+                          help="sample thin parts densely on every mesh (default: as the "
+                          "presets, adaptive on organic shapes, uniform on CAD parts)")
+    sampling.add_argument("--uniform", action="store_true",
+                          help="sample every mesh uniformly")
     args = parser.parse_args()
     if args.adaptive:
         EXTRA_ARGS.append("--adaptive")
+    if args.uniform:
+        EXTRA_ARGS.append("--uniform")
     tool = os.path.join(args.build, "bin", "medial-axis")
     benchmark = os.path.join(args.build, "bin", "medialaxis-benchmark")
     for program in (tool, benchmark):

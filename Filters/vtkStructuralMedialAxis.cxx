@@ -45,6 +45,7 @@ void vtkStructuralMedialAxis::SetPresetToCAD()
   this->SetNumberOfSamples(50000);
   this->SetTargetNumberOfVertices(5000);
   this->SetPreserveSharpFeatures(true);
+  this->SetAdaptiveSampling(false);
 }
 
 void vtkStructuralMedialAxis::SetPresetToOrganic()
@@ -52,6 +53,7 @@ void vtkStructuralMedialAxis::SetPresetToOrganic()
   this->SetNumberOfSamples(10000);
   this->SetTargetNumberOfVertices(1000);
   this->SetPreserveSharpFeatures(false);
+  this->SetAdaptiveSampling(true);
 }
 
 int vtkStructuralMedialAxis::FillInputPortInformation(int, vtkInformation* info)

@@ -62,7 +62,11 @@ public:
   ///@{
   /// Sample thin parts densely, by the local thickness of the solid (see
   /// vtkBlueNoiseSurfaceSampler::Adaptive), so that tentacles, ears and
-  /// thin plates are in the medial axis (default off).
+  /// thin plates are in the medial axis. On in the organic preset (the
+  /// default; organic median Hausdorff 0.73% -> 0.55%, octopus 5.6% ->
+  /// 1.0%), off in the CAD preset (50,000 uniform samples resolve CAD
+  /// parts, and the sharp edges of some lose by the thinner spacing
+  /// elsewhere).
   vtkSetMacro(AdaptiveSampling, bool);
   vtkGetMacro(AdaptiveSampling, bool);
   vtkBooleanMacro(AdaptiveSampling, bool);
@@ -212,7 +216,7 @@ protected:
 
   vtkIdType NumberOfSamples = 10000;
   int RandomSeed = 0;
-  bool AdaptiveSampling = false;
+  bool AdaptiveSampling = true;
   vtkIdType TargetNumberOfVertices = 1000;
   bool PreserveSharpFeatures = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;

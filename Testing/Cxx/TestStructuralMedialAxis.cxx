@@ -52,10 +52,14 @@ TEST(StructuralMedialAxis, PresetsFollowThePaper)
   EXPECT_EQ(filter->GetTargetNumberOfVertices(), 1000);
   EXPECT_FALSE(filter->GetPreserveSharpFeatures());
   EXPECT_TRUE(filter->GetGenerateEnvelope());
+  EXPECT_TRUE(filter->GetAdaptiveSampling()); // organic shapes: thin parts sampled densely
   filter->SetPresetToCAD();
   EXPECT_EQ(filter->GetNumberOfSamples(), 50000);
   EXPECT_EQ(filter->GetTargetNumberOfVertices(), 5000);
   EXPECT_TRUE(filter->GetPreserveSharpFeatures());
+  EXPECT_FALSE(filter->GetAdaptiveSampling());
+  filter->SetPresetToOrganic();
+  EXPECT_TRUE(filter->GetAdaptiveSampling());
 }
 
 TEST(StructuralMedialAxis, SameResultAsTheChainWithTimesCountsAndProgress)

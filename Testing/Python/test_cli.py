@@ -169,6 +169,7 @@ class CommandLineTest(unittest.TestCase):
             data = json.load(f)
         self.assertEqual(data["parameters"]["samples"], 3000)
         self.assertEqual(data["parameters"]["feature_normal_filtering"], 3)
+        self.assertTrue(data["parameters"]["adaptive_sampling"])  # the organic preset's
         self.assertEqual(data["counts"]["sites"], 3000)
         self.assertEqual(data["counts"]["vertices"], 50)
         self.assertEqual(data["triangle_quality"]["degenerate"], 0)
@@ -201,6 +202,7 @@ class CommandLineTest(unittest.TestCase):
         with open(report) as f:
             data = json.load(f)
         self.assertEqual(len(data["fillets"]), 12)
+        self.assertFalse(data["parameters"]["adaptive_sampling"])  # the CAD preset's
         for fillet in data["fillets"]:
             self.assertAlmostEqual(fillet["mean_radius"], 0.1, delta=0.003)
             self.assertAlmostEqual(fillet["length"], 1.8, delta=0.06)

@@ -193,14 +193,54 @@ std::size_t JoinPieces(VoronoiMedialAxisResult& result, std::size_t expected,
   return joined;
 }
 
+// Edges of the complex with, per vertex, the ids of the edges on it
+// (compressed rows) and their lengths.
+struct EdgeGraph
+{
+  std::vector<EdgeKey> Edges;
+  std::vector<std::size_t> Start; // vertex v: AdjacentEdge[Start[v] .. Start[v + 1])
+  std::vector<Index> AdjacentEdge;
+  std::vector<double> Length;
+
+  EdgeGraph(const MedialMesh& mesh, std::vector<EdgeKey> edges)
+    : Edges(std::move(edges))
+    , Start(mesh.Centers.size() + 1, 0)
+    , Length(this->Edges.size())
+  {
+    const std::size_t nv = mesh.Centers.size();
+    for (const EdgeKey& e : this->Edges)
+    {
+      ++this->Start[e[0] + 1];
+      ++this->Start[e[1] + 1];
+    }
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      this->Start[v + 1] += this->Start[v];
+    }
+    this->AdjacentEdge.resize(this->Start[nv]);
+    std::vector<std::size_t> cursor(this->Start.begin(), this->Start.end() - 1);
+    for (std::size_t e = 0; e < this->Edges.size(); ++e)
+    {
+      this->AdjacentEdge[cursor[this->Edges[e][0]]++] = static_cast<Index>(e);
+      this->AdjacentEdge[cursor[this->Edges[e][1]]++] = static_cast<Index>(e);
+      this->Length[e] = Norm(mesh.Centers[this->Edges[e][0]] - mesh.Centers[this->Edges[e][1]]);
+    }
+  }
+
+  std::size_t NumberOfVertices() const { return this->Start.size() - 1; }
+};
+
 // Length of the shortest path from `from` to `to` that does not use edge
 // `skip`, or infinity; gives up beyond `bound`. With `path`, also the path,
 // from `to` back to `from` (`previous`: scratch, one entry per vertex).
-double ShortestDetour(const std::vector<std::size_t>& start, const std::vector<Index>& adjacentEdge,
-  const std::vector<EdgeKey>& edges, const std::vector<double>& length, Index from, Index to,
-  std::size_t skip, double bound, std::vector<double>& distance, std::vector<Index>& touched,
-  std::vector<Index>* path = nullptr, std::vector<Index>* previous = nullptr)
+double ShortestDetour(const EdgeGraph& graph, Index from, Index to, std::size_t skip, double bound,
+  std::vector<double>& distance, std::vector<Index>& touched, std::vector<Index>* path = nullptr,
+  std::vector<Index>* previous = nullptr)
 {
+  const std::vector<std::size_t>& start = graph.Start;
+  const std::vector<Index>& adjacentEdge = graph.AdjacentEdge;
+  const std::vector<EdgeKey>& edges = graph.Edges;
+  const std::vector<double>& length = graph.Length;
   using Item = std::pair<double, Index>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
   distance[from] = 0.0;
@@ -266,9 +306,12 @@ double ShortestDetour(const std::vector<std::size_t>& start, const std::vector<I
 
 // Per edge: 1 if removing it disconnects its piece (Tarjan's low-link,
 // iterative).
-std::vector<char> Bridges(std::size_t nv, const std::vector<std::size_t>& start,
-  const std::vector<Index>& adjacentEdge, const std::vector<EdgeKey>& edges)
+std::vector<char> Bridges(const EdgeGraph& graph)
 {
+  const std::size_t nv = graph.NumberOfVertices();
+  const std::vector<std::size_t>& start = graph.Start;
+  const std::vector<Index>& adjacentEdge = graph.AdjacentEdge;
+  const std::vector<EdgeKey>& edges = graph.Edges;
   std::vector<char> bridge(edges.size(), 0);
   std::vector<int> order(nv, -1), low(nv, 0);
   // Stack frames: vertex, the edge it was reached by, next adjacency slot.
@@ -330,40 +373,19 @@ std::size_t CutLoops(MedialMesh& mesh, long long excess)
     {
       break;
     }
-    const std::vector<EdgeKey> edges = AllEdges(mesh);
-    const std::size_t nv = mesh.Centers.size();
-    std::vector<std::size_t> start(nv + 1, 0);
-    for (const EdgeKey& e : edges)
-    {
-      ++start[e[0] + 1];
-      ++start[e[1] + 1];
-    }
-    for (std::size_t v = 0; v < nv; ++v)
-    {
-      start[v + 1] += start[v];
-    }
-    std::vector<Index> adjacentEdge(start[nv]);
-    std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
-    std::vector<double> length(edges.size());
-    for (std::size_t e = 0; e < edges.size(); ++e)
-    {
-      adjacentEdge[cursor[edges[e][0]]++] = static_cast<Index>(e);
-      adjacentEdge[cursor[edges[e][1]]++] = static_cast<Index>(e);
-      length[e] = Norm(mesh.Centers[edges[e][0]] - mesh.Centers[edges[e][1]]);
-    }
+    const EdgeGraph graph(mesh, AllEdges(mesh));
     double best = std::numeric_limits<double>::infinity();
     EdgeKey bestLine{ -1, -1 };
-    const std::vector<char> bridge = Bridges(nv, start, adjacentEdge, edges);
+    const std::vector<char> bridge = Bridges(graph);
     for (const EdgeKey& line : lines)
     {
-      const std::size_t id = EdgeId(edges, line[0], line[1]);
+      const std::size_t id = EdgeId(graph.Edges, line[0], line[1]);
       if (bridge[id])
       {
         continue; // on no loop
       }
-      const double loop = length[id] +
-        ShortestDetour(start, adjacentEdge, edges, length, line[0], line[1], id, best - length[id],
-          distance, touched);
+      const double loop = graph.Length[id] +
+        ShortestDetour(graph, line[0], line[1], id, best - graph.Length[id], distance, touched);
       if (loop < best)
       {
         best = loop;
@@ -784,39 +806,19 @@ std::vector<std::vector<Index>> CoreCycles(const MedialMesh& mesh)
       }
     }
   }
-  // The graph, as compressed rows over all vertex ids.
-  std::vector<EdgeKey> graph;
+  // The graph left.
+  std::vector<EdgeKey> left;
   for (std::size_t e = 0; e < ne; ++e)
   {
     if (edgeAlive[e])
     {
-      graph.push_back(edges[e]);
+      left.push_back(edges[e]);
     }
   }
-  std::vector<std::size_t> rowStart(nv + 1, 0);
-  for (const EdgeKey& e : graph)
-  {
-    ++rowStart[e[0] + 1];
-    ++rowStart[e[1] + 1];
-  }
-  for (std::size_t v = 0; v < nv; ++v)
-  {
-    rowStart[v + 1] += rowStart[v];
-  }
-  std::vector<Index> adjacentEdge(rowStart[nv]);
-  std::vector<double> length(graph.size());
-  {
-    std::vector<std::size_t> cursor(rowStart.begin(), rowStart.end() - 1);
-    for (std::size_t e = 0; e < graph.size(); ++e)
-    {
-      adjacentEdge[cursor[graph[e][0]]++] = static_cast<Index>(e);
-      adjacentEdge[cursor[graph[e][1]]++] = static_cast<Index>(e);
-      length[e] = Norm(mesh.Centers[graph[e][0]] - mesh.Centers[graph[e][1]]);
-    }
-  }
+  const EdgeGraph graph(mesh, std::move(left));
   // Edges left out of a breadth-first spanning forest.
-  std::vector<char> reached(nv, 0), inTree(graph.size(), 0);
-  for (const EdgeKey& root : graph)
+  std::vector<char> reached(nv, 0), inTree(graph.Edges.size(), 0);
+  for (const EdgeKey& root : graph.Edges)
   {
     if (reached[root[0]])
     {
@@ -827,10 +829,10 @@ std::vector<std::vector<Index>> CoreCycles(const MedialMesh& mesh)
     for (std::size_t k = 0; k < queue.size(); ++k)
     {
       const Index v = queue[k];
-      for (std::size_t i = rowStart[v]; i < rowStart[v + 1]; ++i)
+      for (std::size_t i = graph.Start[v]; i < graph.Start[v + 1]; ++i)
       {
-        const Index e = adjacentEdge[i];
-        const Index w = graph[e][0] == v ? graph[e][1] : graph[e][0];
+        const Index e = graph.AdjacentEdge[i];
+        const Index w = graph.Edges[e][0] == v ? graph.Edges[e][1] : graph.Edges[e][0];
         if (!reached[w])
         {
           reached[w] = 1;
@@ -843,17 +845,17 @@ std::vector<std::vector<Index>> CoreCycles(const MedialMesh& mesh)
   std::vector<std::pair<double, std::vector<Index>>> cycles;
   std::vector<double> distance(nv, std::numeric_limits<double>::infinity());
   std::vector<Index> touched, previous(nv, -1), path;
-  for (std::size_t e = 0; e < graph.size(); ++e)
+  for (std::size_t e = 0; e < graph.Edges.size(); ++e)
   {
     if (inTree[e])
     {
       continue;
     }
-    const double detour = ShortestDetour(rowStart, adjacentEdge, graph, length, graph[e][0],
-      graph[e][1], e, std::numeric_limits<double>::infinity(), distance, touched, &path, &previous);
+    const double detour = ShortestDetour(graph, graph.Edges[e][0], graph.Edges[e][1], e,
+      std::numeric_limits<double>::infinity(), distance, touched, &path, &previous);
     if (detour < std::numeric_limits<double>::infinity() && path.size() >= 3)
     {
-      cycles.emplace_back(detour + length[e], path);
+      cycles.emplace_back(detour + graph.Length[e], path);
     }
   }
   std::sort(cycles.begin(), cycles.end());

@@ -296,51 +296,12 @@ std::vector<double> StepLimits(
   return limit;
 }
 
-/// The two triangles (u, v, x) and (v, u, y) across every edge with exactly
-/// two triangles: where a fold can appear.
-struct Hinge
-{
-  Index U, V, X, Y;
-};
-
-std::vector<Hinge> MakeHinges(const MedialMesh& mesh)
-{
-  std::vector<std::array<Index, 3>> halfEdges; // (min, max, apex)
-  for (const auto& t : mesh.Faces)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index u = t[k], v = t[(k + 1) % 3];
-      halfEdges.push_back({ std::min(u, v), std::max(u, v), t[(k + 2) % 3] });
-    }
-  }
-  std::sort(halfEdges.begin(), halfEdges.end());
-  std::vector<Hinge> hinges;
-  for (std::size_t i = 0; i < halfEdges.size();)
-  {
-    std::size_t j = i;
-    while (j < halfEdges.size() && halfEdges[j][0] == halfEdges[i][0] &&
-      halfEdges[j][1] == halfEdges[i][1])
-    {
-      ++j;
-    }
-    if (j - i == 2)
-    {
-      hinges.push_back({ halfEdges[i][0], halfEdges[i][1], halfEdges[i][2], halfEdges[i + 1][2] });
-    }
-    i = j;
-  }
-  return hinges;
-}
-
 bool Degenerate(const MedialMesh& mesh, const std::array<Index, 3>& t)
 {
-  const Point3 &a = mesh.Centers[t[0]], &b = mesh.Centers[t[1]], &c = mesh.Centers[t[2]];
-  const double longest = std::max({ Distance2(a, b), Distance2(b, c), Distance2(c, a) });
-  return !(Norm(Cross(b - a, c - a)) > 1e-12 * longest);
+  return IsDegenerateTriangle(mesh.Centers[t[0]], mesh.Centers[t[1]], mesh.Centers[t[2]]);
 }
 
-bool Folded(const MedialMesh& mesh, const Hinge& h)
+bool Folded(const MedialMesh& mesh, const TriangleHinge& h)
 {
   const auto& c = mesh.Centers;
   return IsFold(c[h.U], c[h.V], c[h.X], c[h.Y]);
@@ -355,10 +316,10 @@ public:
   ValidityGuard(
     const MedialMesh& mesh, const std::vector<std::array<Index, 2>>& edges, double spikeThreshold)
     : Edges(edges)
-    , Hinges(MakeHinges(mesh))
+    , Hinges(TriangleHinges(mesh))
     , SpikeThreshold(spikeThreshold)
   {
-    for (const Hinge& h : this->Hinges)
+    for (const TriangleHinge& h : this->Hinges)
     {
       this->FoldedBefore.push_back(Folded(mesh, h));
     }
@@ -410,7 +371,7 @@ public:
       }
       for (std::size_t i = 0; i < this->Hinges.size(); ++i)
       {
-        const Hinge& h = this->Hinges[i];
+        const TriangleHinge& h = this->Hinges[i];
         if (!this->FoldedBefore[i] && Folded(candidate, h))
         {
           for (Index v : { h.U, h.V, h.X, h.Y })
@@ -451,7 +412,7 @@ private:
   }
 
   const std::vector<std::array<Index, 2>>& Edges;
-  std::vector<Hinge> Hinges;
+  std::vector<TriangleHinge> Hinges;
   double SpikeThreshold;
   std::vector<std::uint8_t> FoldedBefore, DegenerateBefore, SpikeBefore;
 };

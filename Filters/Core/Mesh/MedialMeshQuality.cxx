@@ -23,6 +23,53 @@ double AngleAt(const Point3& p, const Point3& q, const Point3& r)
 }
 }
 
+std::vector<TriangleHinge> TriangleHinges(
+  const MedialMesh& mesh, std::size_t* boundaryEdges, std::size_t* nonManifoldEdges)
+{
+  // (min, max, face, apex) per triangle edge, sorted by edge.
+  std::vector<std::tuple<Index, Index, Index, Index>> halfEdges;
+  halfEdges.reserve(3 * mesh.Faces.size());
+  for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
+  {
+    const auto& t = mesh.Faces[f];
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index u = t[k], v = t[(k + 1) % 3];
+      halfEdges.emplace_back(std::min(u, v), std::max(u, v), static_cast<Index>(f), t[(k + 2) % 3]);
+    }
+  }
+  std::sort(halfEdges.begin(), halfEdges.end());
+  std::vector<TriangleHinge> hinges;
+  std::size_t boundary = 0, nonManifold = 0;
+  for (std::size_t i = 0; i < halfEdges.size();)
+  {
+    std::size_t j = i;
+    while (j < halfEdges.size() && std::get<0>(halfEdges[j]) == std::get<0>(halfEdges[i]) &&
+      std::get<1>(halfEdges[j]) == std::get<1>(halfEdges[i]))
+    {
+      ++j;
+    }
+    boundary += j - i == 1 ? 1 : 0;
+    nonManifold += j - i > 2 ? 1 : 0;
+    if (j - i == 2)
+    {
+      const auto& [u, v, f, x] = halfEdges[i];
+      hinges.push_back(
+        { u, v, f, x, std::get<2>(halfEdges[i + 1]), std::get<3>(halfEdges[i + 1]) });
+    }
+    i = j;
+  }
+  if (boundaryEdges)
+  {
+    *boundaryEdges = boundary;
+  }
+  if (nonManifoldEdges)
+  {
+    *nonManifoldEdges = nonManifold;
+  }
+  return hinges;
+}
+
 MedialMeshQuality MeasureQuality(const MedialMesh& mesh)
 {
   MedialMeshQuality quality;
@@ -34,15 +81,15 @@ MedialMeshQuality MeasureQuality(const MedialMesh& mesh)
   {
     const auto& t = mesh.Faces[f];
     const Point3 &a = mesh.Centers[t[0]], &b = mesh.Centers[t[1]], &c = mesh.Centers[t[2]];
-    const double twiceArea = Norm(Cross(b - a, c - a));
-    const double la = Norm(c - b), lb = Norm(a - c), lc = Norm(b - a);
-    const double longest = std::max({ la, lb, lc });
-    if (!(twiceArea > 1e-12 * longest * longest))
+    if (IsDegenerateTriangle(a, b, c))
     {
       degenerate[f] = 1;
       ++quality.DegenerateTriangles;
       continue;
     }
+    const double twiceArea = Norm(Cross(b - a, c - a));
+    const double la = Norm(c - b), lb = Norm(a - c), lc = Norm(b - a);
+    const double longest = std::max({ la, lb, lc });
     const double minimum = std::min({ AngleAt(a, b, c), AngleAt(b, c, a), AngleAt(c, a, b) });
     angleSum += minimum;
     below30 += minimum < 30.0 ? 1 : 0;
@@ -58,44 +105,16 @@ MedialMeshQuality MeasureQuality(const MedialMesh& mesh)
     quality.MeanQuality = qualitySum / static_cast<double>(measured);
   }
 
-  // Edges with exactly two faces: (min, max, face, apex).
-  std::vector<std::tuple<Index, Index, Index, Index>> halfEdges;
-  halfEdges.reserve(3 * mesh.Faces.size());
-  for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
-  {
-    const auto& t = mesh.Faces[f];
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index u = t[k], v = t[(k + 1) % 3];
-      halfEdges.emplace_back(std::min(u, v), std::max(u, v), static_cast<Index>(f), t[(k + 2) % 3]);
-    }
-  }
-  std::sort(halfEdges.begin(), halfEdges.end());
   std::vector<char> folded(mesh.Faces.size(), 0);
-  for (std::size_t i = 0; i < halfEdges.size();)
+  for (const TriangleHinge& h :
+    TriangleHinges(mesh, &quality.BoundaryEdges, &quality.NonManifoldEdges))
   {
-    std::size_t j = i;
-    while (j < halfEdges.size() && std::get<0>(halfEdges[j]) == std::get<0>(halfEdges[i]) &&
-      std::get<1>(halfEdges[j]) == std::get<1>(halfEdges[i]))
+    if (!degenerate[h.F] && !degenerate[h.G] &&
+      IsFold(mesh.Centers[h.U], mesh.Centers[h.V], mesh.Centers[h.X], mesh.Centers[h.Y]))
     {
-      ++j;
+      ++quality.FoldedEdges;
+      folded[h.F] = folded[h.G] = 1;
     }
-    quality.BoundaryEdges += j - i == 1 ? 1 : 0;
-    quality.NonManifoldEdges += j - i > 2 ? 1 : 0;
-    if (j - i == 2)
-    {
-      const auto& [u, v, f, x] = halfEdges[i];
-      const Index g = std::get<2>(halfEdges[i + 1]), y = std::get<3>(halfEdges[i + 1]);
-      if (!degenerate[f] && !degenerate[g])
-      {
-        if (IsFold(mesh.Centers[u], mesh.Centers[v], mesh.Centers[x], mesh.Centers[y]))
-        {
-          ++quality.FoldedEdges;
-          folded[f] = folded[g] = 1;
-        }
-      }
-    }
-    i = j;
   }
   quality.FoldedTriangles = static_cast<std::size_t>(std::count(folded.begin(), folded.end(), 1));
   return quality;

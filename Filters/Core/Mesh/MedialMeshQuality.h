@@ -7,8 +7,10 @@
 #include "Geometry/Vec3.h"
 #include "Mesh/MedialMesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 namespace medialaxis
 {
@@ -43,6 +45,26 @@ struct MedialMeshQuality
 constexpr double FoldAngleDegrees = 10.0;
 
 MedialMeshQuality MeasureQuality(const MedialMesh& mesh);
+
+/// Whether the triangle (a, b, c) has (numerically) zero area: twice its
+/// area at most 1e-12 times its longest edge squared.
+inline bool IsDegenerateTriangle(const Point3& a, const Point3& b, const Point3& c)
+{
+  const double longest2 = std::max({ Distance2(a, b), Distance2(b, c), Distance2(c, a) });
+  return !(Norm(Cross(b - a, c - a)) > 1e-12 * longest2);
+}
+
+/// The two triangles across an edge (U, V) on exactly two, F = (U, V, X)
+/// and G = (V, U, Y) up to orientation: where a fold can appear.
+struct TriangleHinge
+{
+  Index U, V, F, X, G, Y;
+};
+
+/// Every hinge of the mesh, by edge (U < V); with the counts of edges on one
+/// triangle and on three or more when asked.
+std::vector<TriangleHinge> TriangleHinges(const MedialMesh& mesh,
+  std::size_t* boundaryEdges = nullptr, std::size_t* nonManifoldEdges = nullptr);
 
 /// Whether the triangles (u, v, x) and (v, u, y), which share the edge
 /// (u, v), fold onto each other (see MedialMeshQuality::FoldedEdges).

@@ -15,6 +15,7 @@
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMedialReconstructionError.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -26,6 +27,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkVoronoiMedialAxis.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -89,6 +91,92 @@ struct StageObserver
     self->Error = medialaxis::ErrorEventMessage(callData);
   }
 };
+
+struct ErrorTargetResult
+{
+  int Ok = 0;
+  double Hausdorff = 0.0; // two-sided, fraction of the diagonal, at the count chosen
+  int Evaluations = 0;
+};
+
+// MaximumError: the smallest vertex count whose two-sided Hausdorff distance
+// stays within the bound, assuming the distance grows as spheres go. Counts
+// are halved from the initial medial mesh until the bound is passed, then
+// bisected (geometrically) to within 5%. Evaluation k reports progress in
+// [1 - 2^-k, 1 - 2^-(k+1)) of the stage, so the bar only moves forward.
+ErrorTargetResult SimplifyToErrorTarget(vtkStructuralMedialAxis* outer,
+  vtkAtlasMedialAxisSimplifier* simplifier, vtkQMatSimplifier* qmat, vtkAlgorithm* simplification,
+  vtkPolyData* surface, vtkIdType initial, StageObserver& observer)
+{
+  const double bound = outer->GetMaximumError();
+  const double stageStart = observer.Start, stageShare = observer.Share;
+  vtkNew<vtkMedialReconstructionError> measure;
+  measure->SetInputData(0, surface);
+  measure->SetInputConnection(1, simplification->GetOutputPort(0));
+  measure->SetNumberOfThreads(outer->GetNumberOfThreads());
+  ErrorTargetResult result;
+  // The error at `target` vertices, or a negative value on failure or abort.
+  auto evaluate = [&](vtkIdType target)
+  {
+    const double slice = std::ldexp(1.0, -(result.Evaluations + 1));
+    observer.Start = stageStart + stageShare * (1.0 - 2.0 * slice);
+    observer.Share = stageShare * slice;
+    ++result.Evaluations;
+    simplifier->SetTargetNumberOfVertices(target);
+    qmat->SetTargetNumberOfVertices(target);
+    if (!simplification->GetExecutive()->Update() || !observer.Error.empty() ||
+      outer->GetAbortExecute())
+    {
+      return -1.0;
+    }
+    measure->Modified();
+    measure->Update();
+    return measure->GetHausdorffPercent() / 100.0;
+  };
+  vtkIdType good = initial, bad = 0; // within the bound at `good`; beyond it at `bad`
+  double goodError = -1.0;
+  for (vtkIdType target = initial / 2; target >= 1; target /= 2)
+  {
+    const double error = evaluate(target);
+    if (error < 0.0)
+    {
+      return result;
+    }
+    if (error > bound)
+    {
+      bad = target;
+      break;
+    }
+    good = target;
+    goodError = error;
+  }
+  while (bad > 0 && good - bad > 1 && static_cast<double>(good) > 1.05 * static_cast<double>(bad))
+  {
+    const vtkIdType middle = std::clamp<vtkIdType>(
+      static_cast<vtkIdType>(std::llround(std::sqrt(static_cast<double>(good) * bad))), bad + 1,
+      good - 1);
+    const double error = evaluate(middle);
+    if (error < 0.0)
+    {
+      return result;
+    }
+    (error > bound ? bad : good) = middle;
+    if (middle == good)
+    {
+      goodError = error;
+    }
+  }
+  // The output at the count chosen (the simplifier is deterministic); even
+  // half the initial vertices too many: the initial medial mesh, measured.
+  const double error = evaluate(good);
+  if (error < 0.0)
+  {
+    return result;
+  }
+  result.Hausdorff = goodError >= 0.0 ? goodError : error;
+  result.Ok = 1;
+  return result;
+}
 // A stage's surface error names places in the local frame; the same check
 // on the input itself gives them in the input's coordinates.
 std::string InInputFrame(const std::string& message, vtkPolyData* local, vtkPolyData* input)
@@ -305,6 +393,7 @@ int vtkStructuralMedialAxis::RequestData(
     { "VoronoiMedialAxis", voronoi, 0.19 }, { "Simplification", simplification, 0.65 } };
   double start = 0.0, total = 0.0;
   std::vector<std::pair<std::string, double>> times;
+  ErrorTargetResult errorTargetResult;
   for (const Stage& stage : stages)
   {
     StageObserver observer{ this, stage.Algorithm, start, stage.Share, {} };
@@ -317,7 +406,13 @@ int vtkStructuralMedialAxis::RequestData(
       stage.Algorithm->AddObserver(vtkCommand::ProgressEvent, progress);
     const unsigned long errorTag = stage.Algorithm->AddObserver(vtkCommand::ErrorEvent, error);
     const auto begin = std::chrono::steady_clock::now();
-    const int ok = stage.Algorithm->GetExecutive()->Update();
+    const bool errorTarget = stage.Algorithm == simplification && this->MaximumError > 0.0;
+    if (errorTarget)
+    {
+      errorTargetResult = SimplifyToErrorTarget(this, simplifier, qmat, simplification, surface,
+        voronoi->GetOutput()->GetNumberOfPoints(), observer);
+    }
+    const int ok = errorTarget ? errorTargetResult.Ok : stage.Algorithm->GetExecutive()->Update();
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     stage.Algorithm->RemoveObserver(progressTag);
@@ -377,6 +472,19 @@ int vtkStructuralMedialAxis::RequestData(
   medialaxis::AddFieldValue(mat, "Sites", sampler->GetOutput()->GetNumberOfPoints());
   medialaxis::AddFieldValue(mat, "InitialVertices", initial->GetNumberOfPoints());
   medialaxis::AddFieldValue(mat, "InitialTriangles", initial->GetNumberOfPolys());
+  if (this->MaximumError > 0.0)
+  {
+    if (errorTargetResult.Hausdorff > this->MaximumError)
+    {
+      vtkWarningMacro(<< "MaximumError " << 100.0 * this->MaximumError
+                      << "% is not reached: the initial medial mesh from " << this->NumberOfSamples
+                      << " samples is already " << 100.0 * errorTargetResult.Hausdorff
+                      << "% from the surface; use more samples");
+    }
+    medialaxis::AddFieldDouble(mat, "MaximumError", this->MaximumError);
+    medialaxis::AddFieldDouble(mat, "ErrorTargetHausdorff", errorTargetResult.Hausdorff);
+    medialaxis::AddFieldValue(mat, "ErrorTargetEvaluations", errorTargetResult.Evaluations);
+  }
 
   if (this->GenerateEnvelope)
   {
@@ -403,6 +511,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "AdaptiveSampling: " << this->AdaptiveSampling << "\n";
   os << indent << "TargetNumberOfVertices: " << this->TargetNumberOfVertices << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";

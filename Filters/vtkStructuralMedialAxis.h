@@ -85,6 +85,25 @@ public:
   ///@}
 
   ///@{
+  /// An error target instead of the vertex target: when above 0, the
+  /// simplification goes to the smallest number of spheres whose two-sided
+  /// Hausdorff distance to the surface (vtkMedialReconstructionError, default
+  /// settings) stays within MaximumError times the surface's bounding-box
+  /// diagonal (e.g. 0.005 for 0.5%). The count is searched, halving from the
+  /// initial medial mesh until the bound is first passed and then bisecting
+  /// between the last two counts to within 5%; each step simplifies and
+  /// measures, so this costs about ten to twenty runs of the simplifier and
+  /// the error measure. The distance does not always grow as spheres go, so
+  /// the count found is within the bound but not always the smallest that
+  /// is. When even the initial medial mesh is not within it, that is the
+  /// output, with a warning (more samples are needed). Field data:
+  /// `MaximumError`, `ErrorTargetHausdorff` (reached, same units),
+  /// `ErrorTargetEvaluations`. Default 0: TargetNumberOfVertices.
+  vtkSetClampMacro(MaximumError, double, 0.0, 1.0);
+  vtkGetMacro(MaximumError, double);
+  ///@}
+
+  ///@{
   /// CAD mode: snap spheres whose surface cells touch a sharp convex edge
   /// onto it with radius 0 (default off).
   vtkSetMacro(PreserveSharpFeatures, bool);
@@ -218,6 +237,7 @@ protected:
   int RandomSeed = 0;
   bool AdaptiveSampling = true;
   vtkIdType TargetNumberOfVertices = 1000;
+  double MaximumError = 0.0;
   bool PreserveSharpFeatures = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   bool EulerNeutralSpikeCollapses = false;

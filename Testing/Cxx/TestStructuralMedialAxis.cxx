@@ -310,3 +310,50 @@ TEST(StructuralMedialAxis, FinalFitSwitch)
   }
   EXPECT_TRUE(moved);
 }
+
+TEST(StructuralMedialAxis, MaximumErrorGivesFewSpheresWithinIt)
+{
+  // A torus, whose medial axis is a circle: a dozen spheres are within 1%
+  // of the diagonal.
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToTorus();
+  shape->SetResolution(24);
+  auto run = [&](double maximumError, vtkIdType target)
+  {
+    vtkNew<vtkStructuralMedialAxis> filter;
+    filter->SetInputConnection(shape->GetOutputPort());
+    filter->SetNumberOfSamples(3000);
+    filter->SetMaximumError(maximumError);
+    filter->SetTargetNumberOfVertices(target);
+    filter->SetGenerateEnvelope(false);
+    filter->Update();
+    vtkSmartPointer<vtkPolyData> mat = filter->GetOutput(0);
+    return mat;
+  };
+  const double bound = 0.01;
+  const vtkSmartPointer<vtkPolyData> searched = run(bound, 1000);
+  const vtkIdType count = searched->GetNumberOfPoints();
+  const double reached = test::FieldValue(searched, "ErrorTargetHausdorff");
+  std::cout << "within " << 100 * bound << "%: " << count << " of "
+            << test::FieldValue(searched, "InitialVertices") << " vertices, " << 100 * reached
+            << "% after " << test::FieldValue(searched, "ErrorTargetEvaluations")
+            << " evaluations\n";
+  EXPECT_EQ(test::FieldValue(searched, "MaximumError"), bound);
+  EXPECT_GT(reached, 0.0);
+  EXPECT_LE(reached, bound);
+  EXPECT_GT(test::FieldValue(searched, "ErrorTargetEvaluations"), 2.0);
+  // Far fewer spheres than the initial medial mesh (the vertex target of
+  // 1,000 is ignored), and exactly what that count as a target gives.
+  EXPECT_LT(count, test::FieldValue(searched, "InitialVertices") / 8);
+  EXPECT_NE(count, 1000);
+  const vtkSmartPointer<vtkPolyData> direct = run(0.0, count);
+  ASSERT_EQ(direct->GetNumberOfPoints(), count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double a[3], b[3];
+    searched->GetPoint(i, a);
+    direct->GetPoint(i, b);
+    ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << i;
+  }
+  EXPECT_EQ(direct->GetFieldData()->GetArray("ErrorTargetEvaluations"), nullptr);
+}

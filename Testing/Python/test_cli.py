@@ -60,6 +60,10 @@ class CommandLineTest(unittest.TestCase):
         result = run("--feature-filtering", "1.5", "a", "b")
         self.assertEqual(result.returncode, 2)
         self.assertIn("--feature-filtering must be a whole number from 0 to 100", result.stderr)
+        for bad in ("0", "-1%", "150%", "half"):
+            result = run("--max-error", bad, "a", "b")
+            self.assertEqual(result.returncode, 2, bad)
+            self.assertIn("--max-error", result.stderr)
 
     def test_qmat_strategy(self):
         sphere = self.write_sphere("sphere.vtp")
@@ -170,6 +174,8 @@ class CommandLineTest(unittest.TestCase):
         self.assertEqual(data["parameters"]["samples"], 3000)
         self.assertEqual(data["parameters"]["feature_normal_filtering"], 3)
         self.assertTrue(data["parameters"]["adaptive_sampling"])  # the organic preset's
+        self.assertEqual(data["parameters"]["max_error"], 0)  # the vertex target
+        self.assertEqual(data["counts"]["error_target_evaluations"], 0)
         self.assertEqual(data["counts"]["sites"], 3000)
         self.assertEqual(data["counts"]["vertices"], 50)
         self.assertEqual(data["triangle_quality"]["degenerate"], 0)

@@ -115,9 +115,11 @@ ErrorTargetResult SimplifyToErrorTarget(vtkStructuralMedialAxis* outer,
   measure->SetInputConnection(1, simplification->GetOutputPort(0));
   measure->SetNumberOfThreads(outer->GetNumberOfThreads());
   ErrorTargetResult result;
+  vtkIdType lastTarget = -1; // what the simplification's output now holds
   // The error at `target` vertices, or a negative value on failure or abort.
   auto evaluate = [&](vtkIdType target)
   {
+    lastTarget = target;
     const double slice = std::ldexp(1.0, -(result.Evaluations + 1));
     observer.Start = stageStart + stageShare * (1.0 - 2.0 * slice);
     observer.Share = stageShare * slice;
@@ -166,14 +168,19 @@ ErrorTargetResult SimplifyToErrorTarget(vtkStructuralMedialAxis* outer,
       goodError = error;
     }
   }
-  // The output at the count chosen (the simplifier is deterministic); even
-  // half the initial vertices too many: the initial medial mesh, measured.
-  const double error = evaluate(good);
-  if (error < 0.0)
+  // The output at the count chosen, unless the last run was at it (the
+  // simplifier is deterministic); even half the initial vertices too many:
+  // the initial medial mesh, measured.
+  if (lastTarget != good || goodError < 0.0)
   {
-    return result;
+    const double error = evaluate(good);
+    if (error < 0.0)
+    {
+      return result;
+    }
+    goodError = goodError >= 0.0 ? goodError : error;
   }
-  result.Hausdorff = goodError >= 0.0 ? goodError : error;
+  result.Hausdorff = goodError;
   result.Ok = 1;
   return result;
 }

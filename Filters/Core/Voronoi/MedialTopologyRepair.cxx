@@ -35,6 +35,47 @@ std::size_t EdgeId(const std::vector<EdgeKey>& edges, Index a, Index b)
     std::lower_bound(edges.begin(), edges.end(), Key(a, b)) - edges.begin());
 }
 
+// Which edges each triangle has and which triangles each edge is on, for
+// the peeling walks below.
+struct FaceIncidence
+{
+  explicit FaceIncidence(const MedialMesh& mesh)
+    : Edges(AllEdges(mesh))
+    , FaceEdges(mesh.Faces.size())
+    , FaceCount(this->Edges.size(), 0)
+    , Start(this->Edges.size() + 1, 0)
+  {
+    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
+    {
+      const auto& t = mesh.Faces[f];
+      for (int k = 0; k < 3; ++k)
+      {
+        this->FaceEdges[f][k] = EdgeId(this->Edges, t[k], t[(k + 1) % 3]);
+        ++this->FaceCount[this->FaceEdges[f][k]];
+      }
+    }
+    for (std::size_t e = 0; e < this->Edges.size(); ++e)
+    {
+      this->Start[e + 1] = this->Start[e] + static_cast<std::size_t>(this->FaceCount[e]);
+    }
+    this->EdgeFaces.resize(this->Start.back());
+    std::vector<std::size_t> cursor(this->Start.begin(), this->Start.end() - 1);
+    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
+    {
+      for (std::size_t e : this->FaceEdges[f])
+      {
+        this->EdgeFaces[cursor[e]++] = static_cast<Index>(f);
+      }
+    }
+  }
+
+  std::vector<EdgeKey> Edges; // sorted
+  std::vector<std::array<std::size_t, 3>> FaceEdges;
+  std::vector<int> FaceCount;     // triangles on each edge
+  std::vector<std::size_t> Start; // edge -> faces, compressed rows
+  std::vector<Index> EdgeFaces;
+};
+
 void AppendVertex(VoronoiMedialAxisResult& result, const Point3& centre, double radius,
   const std::vector<Index>& neighbours)
 {
@@ -57,11 +98,10 @@ void AppendVertex(VoronoiMedialAxisResult& result, const Point3& centre, double 
 // circumcentre inside): it and the faces on it go, and so do the scraps
 // of the bridge that this leaves on their own (pieces as small as the
 // pockets VoronoiMedialAxis.cxx drops).
-std::size_t DropEdgesAcrossSurface(
-  VoronoiMedialAxisResult& result, const TopologyRepairQueries& queries)
+std::size_t DropEdgesAcrossSurface(VoronoiMedialAxisResult& result,
+  const std::vector<EdgeKey>& edges, const TopologyRepairQueries& queries)
 {
   MedialMesh& mesh = result.Mesh;
-  const std::vector<EdgeKey> edges = AllEdges(mesh);
   std::vector<char> across(edges.size(), 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 512),
     [&](const tbb::blocked_range<std::size_t>& r)
@@ -103,13 +143,12 @@ std::size_t DropEdgesAcrossSurface(
 // of the pairs of close vertices in different pieces, shortest first, each
 // whose segment stays inside the surface joins its two pieces. Also gives
 // the number of loops left (pieces - Euler characteristic: no void is left).
-std::size_t JoinPieces(VoronoiMedialAxisResult& result, std::size_t expected,
-  const TopologyRepairQueries& queries, long long& loops)
+std::size_t JoinPieces(VoronoiMedialAxisResult& result, const std::vector<EdgeKey>& edges,
+  std::size_t expected, const TopologyRepairQueries& queries, long long& loops)
 {
   MedialMesh& mesh = result.Mesh;
   const std::size_t nv = mesh.Centers.size();
   DisjointSets pieces(nv);
-  const std::vector<EdgeKey> edges = AllEdges(mesh);
   for (const EdgeKey& e : edges)
   {
     pieces.Union(e[0], e[1]);
@@ -519,33 +558,8 @@ class CapPeeler
 {
 public:
   explicit CapPeeler(const MedialMesh& mesh)
-    : Edges(AllEdges(mesh))
-    , FaceEdges(mesh.Faces.size())
-    , BaseCount(this->Edges.size(), 0)
-    , Start(this->Edges.size() + 1, 0)
+    : Incidence(mesh)
   {
-    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
-    {
-      const auto& t = mesh.Faces[f];
-      for (int k = 0; k < 3; ++k)
-      {
-        this->FaceEdges[f][k] = EdgeId(this->Edges, t[k], t[(k + 1) % 3]);
-        ++this->BaseCount[this->FaceEdges[f][k]];
-      }
-    }
-    for (std::size_t e = 0; e < this->Edges.size(); ++e)
-    {
-      this->Start[e + 1] = this->Start[e] + static_cast<std::size_t>(this->BaseCount[e]);
-    }
-    this->EdgeFaces.resize(this->Start.back());
-    std::vector<std::size_t> cursor(this->Start.begin(), this->Start.end() - 1);
-    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
-    {
-      for (std::size_t e : this->FaceEdges[f])
-      {
-        this->EdgeFaces[cursor[e]++] = static_cast<Index>(f);
-      }
-    }
   }
 
   /// True when the fan from a new vertex over the closed `loop` (of edges
@@ -556,23 +570,24 @@ public:
     {
       return true;
     }
-    const std::size_t nf = this->FaceEdges.size(), ne = this->Edges.size(), n = loop.size();
+    const std::size_t nf = this->Incidence.FaceEdges.size(), ne = this->Incidence.Edges.size(),
+                      n = loop.size();
     // Cap face k: hub, loop[k], loop[k + 1]; its edges: the loop edge and
     // spokes k and k + 1 (ids ne + k).
     std::vector<std::array<std::size_t, 3>> capEdges(n);
-    std::vector<int> count(this->BaseCount);
+    std::vector<int> count(this->Incidence.FaceCount);
     count.resize(ne + n, 2);
     std::vector<std::pair<std::size_t, Index>> loopEdgeCap(n); // sorted: edge -> cap face
     for (std::size_t k = 0; k < n; ++k)
     {
-      const std::size_t e = EdgeId(this->Edges, loop[k], loop[(k + 1) % n]);
+      const std::size_t e = EdgeId(this->Incidence.Edges, loop[k], loop[(k + 1) % n]);
       capEdges[k] = { e, ne + k, ne + (k + 1) % n };
       ++count[e];
       loopEdgeCap[k] = { e, static_cast<Index>(nf + k) };
     }
     std::sort(loopEdgeCap.begin(), loopEdgeCap.end());
     auto edgesOf = [&](std::size_t f) -> const std::array<std::size_t, 3>&
-    { return f < nf ? this->FaceEdges[f] : capEdges[f - nf]; };
+    { return f < nf ? this->Incidence.FaceEdges[f] : capEdges[f - nf]; };
     std::vector<char> alive(nf + n, 1);
     auto isFree = [&](std::size_t f)
     {
@@ -596,9 +611,9 @@ public:
         stack.push_back(static_cast<Index>(nf + (k + n - 1) % n));
         return;
       }
-      for (std::size_t i = this->Start[e]; i < this->Start[e + 1]; ++i)
+      for (std::size_t i = this->Incidence.Start[e]; i < this->Incidence.Start[e + 1]; ++i)
       {
-        stack.push_back(this->EdgeFaces[i]);
+        stack.push_back(this->Incidence.EdgeFaces[i]);
       }
       const auto cap = std::lower_bound(loopEdgeCap.begin(), loopEdgeCap.end(),
         std::pair<std::size_t, Index>{ e, std::numeric_limits<Index>::min() });
@@ -638,29 +653,29 @@ private:
     std::vector<std::size_t> rim;
     for (std::size_t k = 0; k < loop.size(); ++k)
     {
-      rim.push_back(EdgeId(this->Edges, loop[k], loop[(k + 1) % loop.size()]));
-      if (this->BaseCount[rim.back()] != 1)
+      rim.push_back(EdgeId(this->Incidence.Edges, loop[k], loop[(k + 1) % loop.size()]));
+      if (this->Incidence.FaceCount[rim.back()] != 1)
       {
         return false;
       }
     }
     std::sort(rim.begin(), rim.end());
-    std::vector<Index> patch{ this->EdgeFaces[this->Start[rim[0]]] };
+    std::vector<Index> patch{ this->Incidence.EdgeFaces[this->Incidence.Start[rim[0]]] };
     for (std::size_t k = 0; k < patch.size(); ++k)
     {
-      for (std::size_t e : this->FaceEdges[patch[k]])
+      for (std::size_t e : this->Incidence.FaceEdges[patch[k]])
       {
         if (std::binary_search(rim.begin(), rim.end(), e))
         {
           continue;
         }
-        if (this->BaseCount[e] != 2)
+        if (this->Incidence.FaceCount[e] != 2)
         {
           return false;
         }
-        for (std::size_t i = this->Start[e]; i < this->Start[e + 1]; ++i)
+        for (std::size_t i = this->Incidence.Start[e]; i < this->Incidence.Start[e + 1]; ++i)
         {
-          const Index f = this->EdgeFaces[i];
+          const Index f = this->Incidence.EdgeFaces[i];
           if (std::find(patch.begin(), patch.end(), f) == patch.end())
           {
             if (patch.size() == limit)
@@ -675,17 +690,14 @@ private:
     // Closed up: every rim edge must be on the patch, or the loop bounds
     // more than one patch and is not that simple.
     return std::all_of(rim.begin(), rim.end(),
-      [&](std::size_t e) {
-        return std::find(patch.begin(), patch.end(), this->EdgeFaces[this->Start[e]]) !=
-          patch.end();
+      [&](std::size_t e)
+      {
+        return std::find(patch.begin(), patch.end(),
+                 this->Incidence.EdgeFaces[this->Incidence.Start[e]]) != patch.end();
       });
   }
 
-  std::vector<EdgeKey> Edges;
-  std::vector<std::array<std::size_t, 3>> FaceEdges;
-  std::vector<int> BaseCount;
-  std::vector<std::size_t> Start; // edge -> faces, compressed rows
-  std::vector<Index> EdgeFaces;
+  FaceIncidence Incidence;
 };
 
 // The complex collapsed to a graph: triangles go with a free edge of theirs
@@ -695,35 +707,13 @@ private:
 // complex does not collapse to a graph.
 std::vector<std::vector<Index>> CoreCycles(const MedialMesh& mesh)
 {
-  const std::vector<EdgeKey> edges = AllEdges(mesh);
+  const FaceIncidence incidence(mesh);
+  const std::vector<EdgeKey>& edges = incidence.Edges;
+  const auto& faceEdges = incidence.FaceEdges;
+  const auto& start = incidence.Start;
+  const auto& edgeFaces = incidence.EdgeFaces;
   const std::size_t nf = mesh.Faces.size(), ne = edges.size(), nv = mesh.Centers.size();
-  std::vector<std::array<std::size_t, 3>> faceEdges(nf);
-  std::vector<int> count(ne, 0);
-  std::vector<std::size_t> start(ne + 1, 0);
-  for (std::size_t f = 0; f < nf; ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      faceEdges[f][k] = EdgeId(edges, mesh.Faces[f][k], mesh.Faces[f][(k + 1) % 3]);
-      ++count[faceEdges[f][k]];
-      ++start[faceEdges[f][k] + 1];
-    }
-  }
-  for (std::size_t e = 0; e < ne; ++e)
-  {
-    start[e + 1] += start[e];
-  }
-  std::vector<Index> edgeFaces(start.back());
-  {
-    std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < nf; ++f)
-    {
-      for (std::size_t e : faceEdges[f])
-      {
-        edgeFaces[cursor[e]++] = static_cast<Index>(f);
-      }
-    }
-  }
+  std::vector<int> count(incidence.FaceCount);
   std::vector<char> faceAlive(nf, 1), edgeAlive(ne, 1);
   std::vector<Index> stack(nf);
   for (std::size_t f = 0; f < nf; ++f)
@@ -1014,10 +1004,15 @@ TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,
   {
     return counts;
   }
-  counts.EdgesAcrossSurface = DropEdgesAcrossSurface(result, queries);
+  std::vector<EdgeKey> edges = AllEdges(result.Mesh);
+  counts.EdgesAcrossSurface = DropEdgesAcrossSurface(result, edges, queries);
+  if (counts.EdgesAcrossSurface > 0)
+  {
+    edges = AllEdges(result.Mesh); // faces, edges and scraps went
+  }
   long long loops = 0;
   counts.JoinedPieces =
-    JoinPieces(result, std::max<std::size_t>(1, expected.Components), queries, loops);
+    JoinPieces(result, edges, std::max<std::size_t>(1, expected.Components), queries, loops);
   const long long excess = loops - expected.Genus;
   counts.CutLoops = CutLoops(result.Mesh, excess);
   // Holes in sheets first; then loops of any shape, e.g. round a tube.

@@ -227,7 +227,12 @@ std::vector<Stage> RunPipeline(
   stages.push_back(Measure("voronoi",
     [&]
     {
-      voronoi = ComputeVoronoiMedialAxis(mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature);
+      VoronoiMedialAxisOptions voronoiOptions;
+      voronoiOptions.CoveringRadius = rvd.CellRadius.empty()
+        ? 0.0
+        : *std::max_element(rvd.CellRadius.begin(), rvd.CellRadius.end());
+      voronoi = ComputeVoronoiMedialAxis(
+        mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature, voronoiOptions);
     }));
   std::printf("  initial MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "
               "%zu Delaunay cells, %zu exact inside tests\n",

@@ -146,9 +146,11 @@ int vtkRestrictedVoronoiDiagram::RequestData(
   {
     sitesOut->SetVerts(sitesPoly->GetVerts());
   }
-  vtkNew<vtkDoubleArray> area, centroid;
+  vtkNew<vtkDoubleArray> area, reach, centroid;
   area->SetName("CellArea");
   area->SetNumberOfTuples(ns);
+  reach->SetName("CellRadius");
+  reach->SetNumberOfTuples(ns);
   centroid->SetName("CellCentroid");
   centroid->SetNumberOfComponents(3);
   centroid->SetNumberOfTuples(ns);
@@ -163,14 +165,15 @@ int vtkRestrictedVoronoiDiagram::RequestData(
   for (vtkIdType i = 0; i < ns; ++i)
   {
     area->SetValue(i, rvd.CellArea[i]);
+    reach->SetValue(i, rvd.CellRadius[i]);
     centroid->SetTypedTuple(i, rvd.CellCentroid[i].data());
     convex->SetValue(i, rvd.ConvexFeature[i]);
     concave->SetValue(i, rvd.ConcaveFeature[i]);
     components->SetValue(i, rvd.CellComponents[i]);
   }
-  for (vtkDataArray* a : { static_cast<vtkDataArray*>(area), static_cast<vtkDataArray*>(centroid),
-         static_cast<vtkDataArray*>(convex), static_cast<vtkDataArray*>(concave),
-         static_cast<vtkDataArray*>(components) })
+  for (vtkDataArray* a : { static_cast<vtkDataArray*>(area), static_cast<vtkDataArray*>(reach),
+         static_cast<vtkDataArray*>(centroid), static_cast<vtkDataArray*>(convex),
+         static_cast<vtkDataArray*>(concave), static_cast<vtkDataArray*>(components) })
   {
     sitesOut->GetPointData()->AddArray(a);
   }

@@ -15,7 +15,9 @@
  * `SiteConvexFeature` and `SiteConcaveFeature`.
  *
  * Output port 1, the sites with their point data plus, per site:
- * `CellArea` (area of its restricted cell), `CellCentroid`,
+ * `CellArea` (area of its restricted cell), `CellRadius` (the distance
+ * from the site to the farthest point of its cell: every surface point lies
+ * within the largest CellRadius of a site), `CellCentroid`,
  * `ConvexFeature` / `ConcaveFeature` (1 when the cell crosses a sharp convex
  * edge, dihedral angle below 180° - FeatureAngle, or a sharp concave edge,
  * above 180° + FeatureAngle; convex edges are confirmed by filtered normals,

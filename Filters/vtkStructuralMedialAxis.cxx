@@ -319,6 +319,7 @@ struct LocalFrame
     };
     this->ScaleBack(copied(data->GetPointData(), "Radius", false), 1);
     this->ScaleBack(copied(data->GetPointData(), "CellArea", false), 2);
+    this->ScaleBack(copied(data->GetPointData(), "CellRadius", false), 1);
     this->ToWorld(copied(data->GetPointData(), "CellCentroid", true));
     this->ToWorld(copied(data->GetFieldData(), "SitePositions", true));
   }

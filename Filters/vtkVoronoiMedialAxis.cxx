@@ -90,6 +90,15 @@ int vtkVoronoiMedialAxis::RequestData(
   }
 
   medialaxis::VoronoiMedialAxisOptions options;
+  // The restricted Voronoi diagram's cell radii bound the distance from any
+  // surface point to the sites: the repair then skips provably inside edges.
+  if (vtkDataArray* r = sitesIn->GetPointData()->GetArray("CellRadius"))
+  {
+    for (vtkIdType i = 0; i < ns; ++i)
+    {
+      options.CoveringRadius = std::max(options.CoveringRadius, r->GetComponent(i, 0));
+    }
+  }
   options.ConcaveFiltering = this->ConcaveFiltering;
   options.RepairThinParts = this->RepairThinParts;
   options.RepairTopology = this->RepairTopology;
@@ -135,8 +144,8 @@ int vtkVoronoiMedialAxis::RequestData(
       { "WeldedCells", result.WeldedCells }, { "FilteredTriangles", result.FilteredFaces },
       { "DroppedPockets", result.DroppedPockets }, { "SpanningCells", result.SpanningCells },
       { "OpenedVoids", result.OpenedVoids }, { "EdgesAcrossSurface", result.EdgesAcrossSurface },
-      { "JoinedPieces", result.JoinedPieces },
-      { "CutLoops", result.CutLoops }, { "FilledHoles", result.FilledHoles } })
+      { "JoinedPieces", result.JoinedPieces }, { "CutLoops", result.CutLoops },
+      { "FilledHoles", result.FilledHoles } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }

@@ -244,3 +244,38 @@ TEST(MedialTopologyRepair, DropsAnEdgeBridgingTwoSolids)
   EXPECT_EQ(Pieces(result.Mesh), 2u);
   EXPECT_EQ(result.Mesh.Faces.size(), 16u);
 }
+
+TEST(MedialTopologyRepair, TestsOnlyEdgesTheBallsFreeOfSurfaceLeaveOpen)
+{
+  // The same two balls, with the distance to their surface as the lower
+  // bound: every disk edge (at most 0.5 long, its ends 1 or more deep) is
+  // covered by its ends' balls and skips the segment test; the edge from
+  // hub to hub (4 long, its ends 1.5 deep) is tested, and goes.
+  auto depth = [](const Point3& p) {
+    return 1.5 - std::min(Norm(p - Point3{ -2.0, 0.0, 0.0 }), Norm(p - Point3{ 2.0, 0.0, 0.0 }));
+  };
+  std::size_t tests = 0;
+  const TopologyRepairQueries twoBalls{ [depth](const Point3& p) { return depth(p) > 0.0; }, depth,
+    [&tests, depth](const Point3& a, const Point3& b)
+    {
+      ++tests;
+      for (int k = 0; k <= 1000; ++k)
+      {
+        if (depth(a + (k / 1000.0) * (b - a)) <= 0.0)
+        {
+          return true;
+        }
+      }
+      return false;
+    },
+    depth };
+  VoronoiMedialAxisResult result;
+  AddDisk(result, 8, 0.5, { -2.0, 0.0, 0.0 });
+  AddDisk(result, 8, 0.5, { 2.0, 0.0, 0.0 });
+  result.Mesh.Edges = { { 0, 9 } };
+  const TopologyRepairCounts counts = RepairMedialTopology(result, { 2, 0 }, twoBalls);
+  EXPECT_EQ(tests, 1u);
+  EXPECT_EQ(counts.EdgesAcrossSurface, 1u);
+  EXPECT_TRUE(result.Mesh.Edges.empty());
+  EXPECT_EQ(Pieces(result.Mesh), 2u);
+}

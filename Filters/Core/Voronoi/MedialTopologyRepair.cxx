@@ -102,6 +102,20 @@ std::size_t DropEdgesAcrossSurface(VoronoiMedialAxisResult& result,
   const std::vector<EdgeKey>& edges, const TopologyRepairQueries& queries)
 {
   MedialMesh& mesh = result.Mesh;
+  // The two open balls free of surface at an edge's ends cover it when
+  // they overlap: most edges inside thick parts need no segment test.
+  std::vector<double> clear(mesh.Centers.size(), 0.0);
+  if (queries.DistanceLowerBound)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, clear.size(), 1024),
+      [&](const tbb::blocked_range<std::size_t>& r)
+      {
+        for (std::size_t v = r.begin(); v != r.end(); ++v)
+        {
+          clear[v] = std::max(0.0, queries.DistanceLowerBound(mesh.Centers[v]));
+        }
+      });
+  }
   std::vector<char> across(edges.size(), 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 512),
     [&](const tbb::blocked_range<std::size_t>& r)
@@ -110,6 +124,10 @@ std::size_t DropEdgesAcrossSurface(VoronoiMedialAxisResult& result,
       {
         // The open segment: an end may lie on the surface (radius 0).
         const Point3 &a = mesh.Centers[edges[e][0]], &b = mesh.Centers[edges[e][1]];
+        if (Norm(b - a) < clear[edges[e][0]] + clear[edges[e][1]])
+        {
+          continue;
+        }
         across[e] = queries.Crosses(a + 1e-6 * (b - a), b - 1e-6 * (b - a)) ? 1 : 0;
       }
     });

@@ -343,6 +343,7 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
   std::vector<std::uint8_t> edgeMask;
   edgeMask.reserve(np);
   rvd.CellArea.assign(ns, 0.0);
+  rvd.CellRadius.assign(ns, 0.0);
   std::vector<Point3> weighted(ns, Point3{ 0.0, 0.0, 0.0 });
   for (auto& o : outputs)
   {
@@ -354,6 +355,11 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
       rvd.PolygonTriangle.push_back(o.Triangles[p]);
       edgeMask.push_back(o.EdgeMask[p]);
       rvd.CellArea[o.Sites[p]] += 0.5 * o.TwiceArea[p];
+      double& reach = rvd.CellRadius[o.Sites[p]];
+      for (Index k = rvd.Offsets[rvd.Offsets.size() - 2]; k < rvd.Offsets.back(); ++k)
+      {
+        reach = std::max(reach, Norm(rvd.Vertices[k] - sites[o.Sites[p]]));
+      }
       weighted[o.Sites[p]] = weighted[o.Sites[p]] + o.WeightedCentroid[p];
     }
     o = BlockOutput(); // release memory early

@@ -38,6 +38,9 @@ struct RestrictedVoronoiDiagram
 
   // Per site.
   std::vector<double> CellArea;
+  /// How far the cell reaches from its site (its farthest vertex). Every
+  /// surface point lies within the largest of these of some site.
+  std::vector<double> CellRadius;
   std::vector<Point3> CellCentroid;
   std::vector<std::uint8_t> ConvexFeature;  // the cell crosses a sharp convex edge
   std::vector<std::uint8_t> ConcaveFeature; // the cell crosses a sharp concave edge

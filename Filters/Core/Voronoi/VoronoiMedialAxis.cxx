@@ -3,6 +3,7 @@
 // AABB tree: they take long to compile, so they are kept together here.
 #include "Voronoi/VoronoiMedialAxis.h"
 
+#include "Geometry/KdTree.h"
 #include "Geometry/Vec3.h"
 #include "Mesh/TriangleAdjacency.h"
 #include "Support/DisjointSets.h"
@@ -764,11 +765,20 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   // 7. What the sampling still got wrong about the solid's topology.
   if (options.RepairTopology)
   {
-    const TopologyRepairQueries surfaceQueries{
-      [&queries](const Point3& p) { return queries.Inside(p); },
+    // A surface point lies within CoveringRadius of a site: a point is at
+    // least its distance to the nearest site less that from the surface.
+    std::unique_ptr<KdTree> siteTree;
+    std::function<double(const Point3&)> lowerBound;
+    if (options.CoveringRadius > 0.0)
+    {
+      siteTree = std::make_unique<KdTree>(sites);
+      lowerBound = [&siteTree, &sites, &options](const Point3& p)
+      { return Norm(p - sites[siteTree->Nearest(p)]) - options.CoveringRadius; };
+    }
+    const TopologyRepairQueries surfaceQueries{ [&queries](const Point3& p)
+      { return queries.Inside(p); },
       [&queries](const Point3& p) { return queries.Distance(p); },
-      [&queries](const Point3& a, const Point3& b) { return queries.Crosses(a, b); }
-    };
+      [&queries](const Point3& a, const Point3& b) { return queries.Crosses(a, b); }, lowerBound };
     const TopologyRepairCounts repaired =
       RepairMedialTopology(result, ComputeSurfaceTopology(surface), surfaceQueries);
     result.EdgesAcrossSurface = repaired.EdgesAcrossSurface;

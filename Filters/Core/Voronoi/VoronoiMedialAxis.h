@@ -34,6 +34,11 @@ struct VoronoiMedialAxisOptions
   /// are removed, pieces cut off are joined,
   /// spurious loops opened and holes in sheets capped, smallest first.
   bool RepairTopology = true;
+  /// Every surface point lies within this distance of a site: the largest
+  /// CellRadius of the sites' restricted Voronoi diagram. With it, the
+  /// topology repair skips the crossing test on the medial edges that
+  /// provably stay inside; 0 (unknown) tests every edge. Same result.
+  double CoveringRadius = 0.0;
   /// Fraction in [0, 1]; returning false aborts (the result is then empty).
   std::function<bool(double)> Progress;
 };

@@ -14,52 +14,6 @@ std::array<Index, 2> SortedEdge(Index a, Index b)
   return a < b ? std::array<Index, 2>{ a, b } : std::array<Index, 2>{ b, a };
 }
 
-// Sorts edge keys (a < b) lexicographically: bucketed by a (a counting
-// sort), then each bucket's few b sorted. Linear in the keys, where a
-// comparison sort of the pairs was a large share of the initial medial
-// mesh's clean-up and repair.
-void SortEdgeKeys(std::vector<std::array<Index, 2>>& keys)
-{
-  Index lowest = 0, highest = -1;
-  for (const auto& k : keys)
-  {
-    lowest = std::min(lowest, k[0]);
-    highest = std::max(highest, k[0]);
-  }
-  if (keys.size() < 256 || lowest < 0)
-  {
-    std::sort(keys.begin(), keys.end());
-    return;
-  }
-  const std::size_t buckets = static_cast<std::size_t>(highest) + 1;
-  std::vector<std::size_t> start(buckets + 1, 0);
-  for (const auto& k : keys)
-  {
-    ++start[static_cast<std::size_t>(k[0]) + 1];
-  }
-  for (std::size_t a = 0; a < buckets; ++a)
-  {
-    start[a + 1] += start[a];
-  }
-  std::vector<Index> second(keys.size());
-  {
-    std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
-    for (const auto& k : keys)
-    {
-      second[cursor[static_cast<std::size_t>(k[0])]++] = k[1];
-    }
-  }
-  for (std::size_t a = 0; a < buckets; ++a)
-  {
-    std::sort(second.begin() + static_cast<std::ptrdiff_t>(start[a]),
-      second.begin() + static_cast<std::ptrdiff_t>(start[a + 1]));
-    for (std::size_t i = start[a]; i < start[a + 1]; ++i)
-    {
-      keys[i] = { static_cast<Index>(a), second[i] };
-    }
-  }
-}
-
 std::array<Index, 3> SortedFace(std::array<Index, 3> f)
 {
   std::sort(f.begin(), f.end());
@@ -159,6 +113,52 @@ MedialMeshCheck ValidateMedialMesh(const MedialMesh& mesh)
     return check;
   }
   return check;
+}
+
+// Sorts edge keys (a < b) lexicographically: bucketed by a (a counting
+// sort), then each bucket's few b sorted. Linear in the keys, where a
+// comparison sort of the pairs was a large share of the initial medial
+// mesh's clean-up and repair.
+void SortEdgeKeys(std::vector<std::array<Index, 2>>& keys)
+{
+  Index lowest = 0, highest = -1;
+  for (const auto& k : keys)
+  {
+    lowest = std::min(lowest, k[0]);
+    highest = std::max(highest, k[0]);
+  }
+  if (keys.size() < 256 || lowest < 0)
+  {
+    std::sort(keys.begin(), keys.end());
+    return;
+  }
+  const std::size_t buckets = static_cast<std::size_t>(highest) + 1;
+  std::vector<std::size_t> start(buckets + 1, 0);
+  for (const auto& k : keys)
+  {
+    ++start[static_cast<std::size_t>(k[0]) + 1];
+  }
+  for (std::size_t a = 0; a < buckets; ++a)
+  {
+    start[a + 1] += start[a];
+  }
+  std::vector<Index> second(keys.size());
+  {
+    std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
+    for (const auto& k : keys)
+    {
+      second[cursor[static_cast<std::size_t>(k[0])]++] = k[1];
+    }
+  }
+  for (std::size_t a = 0; a < buckets; ++a)
+  {
+    std::sort(second.begin() + static_cast<std::ptrdiff_t>(start[a]),
+      second.begin() + static_cast<std::ptrdiff_t>(start[a + 1]));
+    for (std::size_t i = start[a]; i < start[a + 1]; ++i)
+    {
+      keys[i] = { static_cast<Index>(a), second[i] };
+    }
+  }
 }
 
 std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh)

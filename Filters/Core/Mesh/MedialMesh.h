@@ -41,6 +41,10 @@ MedialMeshCheck ValidateMedialMesh(const MedialMesh& mesh);
 /// as line cells in the VTK representation.
 std::vector<std::array<Index, 2>> EdgesNotOnFaces(const MedialMesh& mesh);
 
+/// Sorts edge keys (a, b), a < b, lexicographically in linear time (a
+/// counting sort on a); negative ids fall back to a comparison sort.
+void SortEdgeKeys(std::vector<std::array<Index, 2>>& keys);
+
 /// Every distinct edge, face edges included, sorted by (min, max) vertex id.
 std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh);
 

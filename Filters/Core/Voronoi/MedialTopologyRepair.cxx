@@ -978,6 +978,7 @@ SurfaceTopology ComputeSurfaceTopology(const TriangleMesh& surface)
   DisjointSets pieces(np);
   std::vector<char> used(np, 0);
   std::vector<EdgeKey> edges;
+  edges.reserve(3 * surface.Triangles.size());
   for (const Triangle& t : surface.Triangles)
   {
     for (int k = 0; k < 3; ++k)
@@ -987,9 +988,9 @@ SurfaceTopology ComputeSurfaceTopology(const TriangleMesh& surface)
       edges.push_back(Key(t[k], t[(k + 1) % 3]));
     }
   }
-  std::sort(edges.begin(), edges.end());
+  SortEdgeKeys(edges);
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  std::map<Index, long long> euler; // per piece: V - E + F
+  std::vector<long long> euler(np, 0); // per piece, at its root: V - E + F
   for (std::size_t p = 0; p < np; ++p)
   {
     if (used[p])
@@ -1006,10 +1007,13 @@ SurfaceTopology ComputeSurfaceTopology(const TriangleMesh& surface)
     ++euler[pieces.Find(t[0])];
   }
   SurfaceTopology topology;
-  topology.Components = euler.size();
-  for (const auto& piece : euler)
+  for (std::size_t p = 0; p < np; ++p)
   {
-    topology.Genus += std::max(0LL, (2 - piece.second) / 2);
+    if (used[p] && pieces.Find(static_cast<Index>(p)) == static_cast<Index>(p))
+    {
+      ++topology.Components;
+      topology.Genus += std::max(0LL, (2 - euler[p]) / 2);
+    }
   }
   return topology;
 }
@@ -1035,8 +1039,11 @@ TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,
   counts.CutLoops = CutLoops(result.Mesh, excess);
   // Holes in sheets first; then loops of any shape, e.g. round a tube.
   long long left = excess - static_cast<long long>(counts.CutLoops);
-  counts.FilledHoles = CapLoops(result, BoundaryLoops(result.Mesh), left, queries);
-  left -= static_cast<long long>(counts.FilledHoles);
+  if (left > 0)
+  {
+    counts.FilledHoles = CapLoops(result, BoundaryLoops(result.Mesh), left, queries);
+    left -= static_cast<long long>(counts.FilledHoles);
+  }
   if (left > 0)
   {
     counts.FilledHoles += CapLoops(result, CoreCycles(result.Mesh), left, queries);

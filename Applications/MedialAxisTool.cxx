@@ -91,10 +91,11 @@ Options:
                         fillets and keep organic shapes simplified far (e.g.
                         50,000 samples -> 1,000 spheres) from losing ears and
                         fingers (default: on without --sharp when the target
-                        is at least 200 spheres, off otherwise; below 200,
-                        --fringe-collapses is better for most organic shapes,
-                        but not for tubes and blobs, whose medial axis is a
-                        curve or a point)
+                        is at least 200 spheres; below 200 without --sharp,
+                        both are run and the one closer to the surface is
+                        kept: on for most organic shapes, off for tubes and
+                        blobs, whose medial axis is a curve or a point; off
+                        with --sharp)
   --spike-collapses     the same for spike edges only: removes most spike
                         triangles of organic shapes
   --fit, --no-fit       after simplification, fit the spheres' centres and

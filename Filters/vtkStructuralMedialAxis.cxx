@@ -184,6 +184,57 @@ ErrorTargetResult SimplifyToErrorTarget(vtkStructuralMedialAxis* outer,
   result.Ok = 1;
   return result;
 }
+// Below 200 spheres (where the simplifier's automatic setting turns fringe
+// collapses off) an organic shape is simplified both without and with them,
+// and the run whose two-sided Hausdorff distance is smaller is kept. With
+// them most organic shapes keep their parts and their topology (bunny,
+// 50,000 samples -> 100 spheres: 1.8% instead of 4.3%, Euler characteristic
+// 1 instead of 9); without them tubes and blobs, whose medial axis is a
+// curve or a point, shrink to it (a torus to its centre circle). The kept
+// outputs are deep copies; `fringeUsed` says which run they come from.
+struct FringeChoice
+{
+  int Ok = 0;
+  vtkNew<vtkPolyData> Mat;
+  vtkNew<vtkPolyData> Correspondence;
+  double HausdorffOff = 0.0, HausdorffOn = 0.0;
+};
+void SimplifyWithTheCloserFringeSetting(vtkStructuralMedialAxis* outer,
+  vtkAtlasMedialAxisSimplifier* simplifier, vtkPolyData* surface, StageObserver& observer,
+  FringeChoice& choice)
+{
+  const double stageStart = observer.Start, stageShare = observer.Share;
+  vtkNew<vtkMedialReconstructionError> measure;
+  measure->SetInputData(0, surface);
+  measure->SetInputConnection(1, simplifier->GetOutputPort(0));
+  measure->SetNumberOfThreads(outer->GetNumberOfThreads());
+  double errors[2] = { 0.0, 0.0 };
+  for (int on = 0; on < 2; ++on)
+  {
+    observer.Start = stageStart + 0.5 * on * stageShare;
+    observer.Share = 0.5 * stageShare;
+    simplifier->SetFringeCollapses(
+      on ? vtkAtlasMedialAxisSimplifier::FringeOn : vtkAtlasMedialAxisSimplifier::FringeOff);
+    if (!simplifier->GetExecutive()->Update() || !observer.Error.empty() ||
+      outer->GetAbortExecute())
+    {
+      return;
+    }
+    measure->Modified();
+    measure->Update();
+    errors[on] = measure->GetHausdorffPercent() / 100.0;
+    if (on == 0 || errors[1] < errors[0])
+    {
+      choice.Mat->DeepCopy(simplifier->GetOutput(0));
+      choice.Correspondence->DeepCopy(simplifier->GetOutputDataObject(1));
+    }
+  }
+  simplifier->SetFringeCollapses(vtkAtlasMedialAxisSimplifier::FringeAutomatic);
+  choice.HausdorffOff = errors[0];
+  choice.HausdorffOn = errors[1];
+  choice.Ok = 1;
+}
+
 // A stage's surface error names places in the local frame; the same check
 // on the input itself gives them in the input's coordinates.
 std::string InInputFrame(const std::string& message, vtkPolyData* local, vtkPolyData* input)
@@ -402,6 +453,13 @@ int vtkStructuralMedialAxis::RequestData(
   double start = 0.0, total = 0.0;
   std::vector<std::pair<std::string, double>> times;
   ErrorTargetResult errorTargetResult;
+  FringeChoice fringeChoice;
+  // The spheres' count below which the simplifier's automatic setting turns
+  // fringe collapses off (AtlasSimplifierOptions::StrictLinkConditionVertexCount).
+  constexpr vtkIdType strictLinkConditionCount = 200;
+  const bool chooseFringe = this->Strategy == Structural && !this->PreserveSharpFeatures &&
+    this->FringeCollapses == vtkAtlasMedialAxisSimplifier::FringeAutomatic &&
+    this->MaximumError <= 0.0 && this->TargetNumberOfVertices < strictLinkConditionCount;
   for (const Stage& stage : stages)
   {
     StageObserver observer{ this, stage.Algorithm, start, stage.Share, {} };
@@ -420,7 +478,14 @@ int vtkStructuralMedialAxis::RequestData(
       errorTargetResult = SimplifyToErrorTarget(this, simplifier, qmat, simplification, surface,
         voronoi->GetOutput()->GetNumberOfPoints(), observer);
     }
-    const int ok = errorTarget ? errorTargetResult.Ok : stage.Algorithm->GetExecutive()->Update();
+    const bool fringeTarget = stage.Algorithm == simplification && chooseFringe;
+    if (fringeTarget)
+    {
+      SimplifyWithTheCloserFringeSetting(this, simplifier, surface, observer, fringeChoice);
+    }
+    const int ok = errorTarget ? errorTargetResult.Ok
+      : fringeTarget           ? fringeChoice.Ok
+                               : stage.Algorithm->GetExecutive()->Update();
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     stage.Algorithm->RemoveObserver(progressTag);
@@ -452,8 +517,10 @@ int vtkStructuralMedialAxis::RequestData(
   }
   else
   {
-    mat->ShallowCopy(simplifier->GetOutput(0));
-    correspondence->ShallowCopy(simplifier->GetOutputDataObject(1));
+    mat->ShallowCopy(chooseFringe ? fringeChoice.Mat.Get() : simplifier->GetOutput(0));
+    correspondence->ShallowCopy(chooseFringe
+        ? static_cast<vtkDataObject*>(fringeChoice.Correspondence.Get())
+        : simplifier->GetOutputDataObject(1));
   }
   sitesOut->ShallowCopy(rvd->GetOutputDataObject(1));
   vtkNew<vtkPolyData> localMat; // for the envelope, built in the local frame
@@ -492,6 +559,13 @@ int vtkStructuralMedialAxis::RequestData(
     medialaxis::AddFieldDouble(mat, "MaximumError", this->MaximumError);
     medialaxis::AddFieldDouble(mat, "ErrorTargetHausdorff", errorTargetResult.Hausdorff);
     medialaxis::AddFieldValue(mat, "ErrorTargetEvaluations", errorTargetResult.Evaluations);
+  }
+  if (chooseFringe)
+  {
+    // Both runs' distances (fractions of the diagonal); FringeCollapsesUsed
+    // says which was kept.
+    medialaxis::AddFieldDouble(mat, "HausdorffWithoutFringeCollapses", fringeChoice.HausdorffOff);
+    medialaxis::AddFieldDouble(mat, "HausdorffWithFringeCollapses", fringeChoice.HausdorffOn);
   }
 
   if (this->GenerateEnvelope)

@@ -143,7 +143,13 @@ public:
   /// FringeOff / FringeOn / FringeAutomatic values this takes): automatic by
   /// default, on for organic shapes simplified to at least 200 spheres. They remove the fringe of
   /// thin fins along large fillets' centre lines and keep organic shapes simplified far (50K
-  /// samples -> 1,000 spheres) from losing ears and fingers.
+  /// samples -> 1,000 spheres) from losing ears and fingers. Automatic below 200 spheres on an
+  /// organic shape (without MaximumError): the simplification runs without and with them, and
+  /// the run with the smaller two-sided Hausdorff distance is kept (most organic shapes keep
+  /// their parts and topology with them; tubes and blobs, whose medial axis is a curve or a
+  /// point, shrink to it without). Field data `FringeCollapsesUsed`,
+  /// `HausdorffWithoutFringeCollapses` and `HausdorffWithFringeCollapses` (fractions of the
+  /// bounding-box diagonal) tell which and why.
   vtkSetClampMacro(FringeCollapses, int, vtkAtlasMedialAxisSimplifier::FringeOff,
     vtkAtlasMedialAxisSimplifier::FringeAutomatic);
   vtkGetMacro(FringeCollapses, int);

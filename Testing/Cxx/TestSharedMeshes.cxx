@@ -24,6 +24,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -406,6 +408,39 @@ TEST(SharedMeshFarSimplification, OrganicShapeKeepsItsParts)
   EXPECT_EQ(medialaxis::EulerCharacteristic(mesh), 1);
   EXPECT_EQ(medialaxis::MeasureQuality(mesh).FoldedTriangles, 0u);
   EXPECT_LT(hausdorff, 3.0);
+}
+
+// 100 spheres: the run with fringe collapses keeps the bunny whole (the
+// strict link condition from the start leaves bubbles: Euler
+// characteristic 9, 4.3%).
+TEST(SharedMeshFarSimplification, HundredSpheresKeepTheShapeAndItsTopology)
+{
+  const std::string path = MeshDir + "/bunny.obj";
+  if (!std::ifstream(path).good())
+  {
+    GTEST_SKIP() << "shared meshes not present at " << MeshDir;
+  }
+  vtkNew<vtkSurfaceFileReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<vtkStructuralMedialAxis> mat;
+  mat->SetInputConnection(reader->GetOutputPort());
+  mat->SetPresetToOrganic();
+  mat->SetNumberOfSamples(50000);
+  mat->SetTargetNumberOfVertices(100);
+  mat->SetGenerateEnvelope(false);
+  mat->Update();
+  vtkPolyData* out = mat->GetOutput(0);
+  medialaxis::MedialMesh mesh;
+  ASSERT_EQ(medialaxis::PolyDataToMedialMesh(out, mesh), "");
+  const double kept = std::min(medialaxis::test::FieldValue(out, "HausdorffWithFringeCollapses"),
+    medialaxis::test::FieldValue(out, "HausdorffWithoutFringeCollapses"));
+  std::cout << "bunny, 50K samples -> 100 spheres: " << 100 * kept
+            << "% of the diagonal, Euler characteristic " << medialaxis::EulerCharacteristic(mesh)
+            << "\n";
+  EXPECT_EQ(mesh.Centers.size(), 100u);
+  EXPECT_EQ(medialaxis::test::FieldValue(out, "FringeCollapsesUsed"), 1.0);
+  EXPECT_EQ(medialaxis::EulerCharacteristic(mesh), 1);
+  EXPECT_LT(kept, 0.03);
 }
 
 INSTANTIATE_TEST_SUITE_P(All, SharedMesh,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The one-click filter: the same result as the chain of stage filters, its
 // presets, per-stage times and counts, progress, abort and stage errors.
+#include "Mesh/MedialMesh.h"
 #include "TestHelpers.h"
 #include "vtkAnalyticShapeSource.h"
 #include "vtkAtlasMedialAxisSimplifier.h"
@@ -309,6 +310,40 @@ TEST(StructuralMedialAxis, FinalFitSwitch)
     moved = moved || a[0] != b[0] || a[1] != b[1] || a[2] != b[2];
   }
   EXPECT_TRUE(moved);
+}
+
+TEST(StructuralMedialAxis, FewSpheresKeepTheCloserFringeSetting)
+{
+  // Below 200 spheres an organic shape is simplified without and with
+  // fringe collapses and the closer run is kept: a torus, whose medial axis
+  // is a circle, shrinks to it without them.
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToTorus();
+  shape->SetResolution(24);
+  vtkNew<vtkStructuralMedialAxis> filter;
+  filter->SetInputConnection(shape->GetOutputPort());
+  filter->SetNumberOfSamples(10000);
+  filter->SetTargetNumberOfVertices(100);
+  filter->SetGenerateEnvelope(false);
+  filter->Update();
+  vtkPolyData* mat = filter->GetOutput(0);
+  const double off = test::FieldValue(mat, "HausdorffWithoutFringeCollapses");
+  const double on = test::FieldValue(mat, "HausdorffWithFringeCollapses");
+  std::cout << "torus, 100 spheres: without fringe collapses " << 100 * off << "%, with them "
+            << 100 * on << "%\n";
+  EXPECT_EQ(mat->GetNumberOfPoints(), 100);
+  EXPECT_GT(off, 0.0);
+  EXPECT_LT(off, on);
+  EXPECT_EQ(test::FieldValue(mat, "FringeCollapsesUsed"), 0.0);
+  medialaxis::MedialMesh mesh;
+  ASSERT_EQ(medialaxis::PolyDataToMedialMesh(mat, mesh), "");
+  EXPECT_EQ(medialaxis::EulerCharacteristic(mesh), 0);
+  // At 200 spheres and more, and on CAD parts, one run with the automatic
+  // setting: no such field data.
+  filter->SetTargetNumberOfVertices(200);
+  filter->Update();
+  EXPECT_EQ(
+    filter->GetOutput(0)->GetFieldData()->GetArray("HausdorffWithFringeCollapses"), nullptr);
 }
 
 TEST(StructuralMedialAxis, MaximumErrorGivesFewSpheresWithinIt)

@@ -335,11 +335,15 @@ public:
 
   /// Shortens the moves from `current` to `candidate` of the spheres of
   /// every element the move made invalid (halving them, at last putting the
-  /// sphere back) until none is left.
+  /// sphere back) until none is left. Degenerate and folded triangles depend
+  /// on the centres alone: a sphere that shrinks keeps its new radius (a
+  /// ball reaching out of the surface at a folded corner of the sheet can
+  /// still draw back; growth without the centre's move could make it reach
+  /// out); spikes shorten both.
   void Shorten(const MedialMesh& current, MedialMesh& candidate) const
   {
     const std::size_t nv = current.NumberOfVertices();
-    std::vector<double> share(nv, 1.0);
+    std::vector<double> shareC(nv, 1.0), shareR(nv, 1.0);
     std::vector<Point3> moveC(nv);
     std::vector<double> moveR(nv);
     for (std::size_t v = 0; v < nv; ++v)
@@ -347,17 +351,31 @@ public:
       moveC[v] = candidate.Centers[v] - current.Centers[v];
       moveR[v] = candidate.Radii[v] - current.Radii[v];
     }
-    std::vector<Index> flagged;
-    const auto flag = [&](Index v)
+    std::vector<Index> flaggedC, flaggedR; // shorten the centre's move, the radius's
+    const auto flag = [&](Index v, bool radiusToo)
     {
-      if (share[v] > 0.0 && (moveR[v] != 0.0 || moveC[v] != Point3{ 0, 0, 0 }))
+      if (shareC[v] > 0.0 && moveC[v] != Point3{ 0, 0, 0 })
       {
-        flagged.push_back(v);
+        flaggedC.push_back(v);
+      }
+      if ((radiusToo || moveR[v] > 0.0) && shareR[v] > 0.0 && moveR[v] != 0.0)
+      {
+        flaggedR.push_back(v);
+      }
+    };
+    const auto shorten = [](std::vector<Index>& flagged, std::vector<double>& share)
+    {
+      std::sort(flagged.begin(), flagged.end());
+      flagged.erase(std::unique(flagged.begin(), flagged.end()), flagged.end());
+      for (Index v : flagged)
+      {
+        share[v] = share[v] > 1.0 / 8.0 ? 0.5 * share[v] : 0.0;
       }
     };
     for (;;)
     {
-      flagged.clear();
+      flaggedC.clear();
+      flaggedR.clear();
       for (std::size_t f = 0; f < candidate.Faces.size(); ++f)
       {
         const auto& t = candidate.Faces[f];
@@ -365,7 +383,7 @@ public:
         {
           for (Index v : t)
           {
-            flag(v);
+            flag(v, false);
           }
         }
       }
@@ -376,7 +394,7 @@ public:
         {
           for (Index v : { h.U, h.V, h.X, h.Y })
           {
-            flag(v);
+            flag(v, false);
           }
         }
       }
@@ -385,21 +403,23 @@ public:
         const auto& e = this->Edges[i];
         if (!this->SpikeBefore[i] && this->Spike(candidate, e))
         {
-          flag(e[0]);
-          flag(e[1]);
+          flag(e[0], true);
+          flag(e[1], true);
         }
       }
-      if (flagged.empty())
+      if (flaggedC.empty() && flaggedR.empty())
       {
         return;
       }
-      std::sort(flagged.begin(), flagged.end());
-      flagged.erase(std::unique(flagged.begin(), flagged.end()), flagged.end());
-      for (Index v : flagged)
+      shorten(flaggedC, shareC);
+      shorten(flaggedR, shareR);
+      for (Index v : flaggedC)
       {
-        share[v] = share[v] > 1.0 / 8.0 ? 0.5 * share[v] : 0.0;
-        candidate.Centers[v] = current.Centers[v] + share[v] * moveC[v];
-        candidate.Radii[v] = current.Radii[v] + share[v] * moveR[v];
+        candidate.Centers[v] = current.Centers[v] + shareC[v] * moveC[v];
+      }
+      for (Index v : flaggedR)
+      {
+        candidate.Radii[v] = current.Radii[v] + shareR[v] * moveR[v];
       }
     }
   }

@@ -10,8 +10,11 @@ per-stage times, peak memory, counts, Euler characteristic against 1 - genus,
 validity and triangle quality, two-sided Hausdorff distance, and whether a
 second run wrote a bit-identical .ma file; then Q-MAT (--strategy qmat) from
 the same initial medial mesh at the same target, for a side-by-side of
-Hausdorff distance, time and triangle quality. --quick runs two small meshes at
-small sizes (the test suite runs it so that the suite cannot rot).
+Hausdorff distance, time and triangle quality, and the share of spike edges
+(stability ratio below 0.025: one sphere nearly inside the other) of each.
+The organic meshes run a second time at 50,000 samples -> 5,000 spheres.
+--quick runs two small meshes at small sizes (the test suite runs it so that
+the suite cannot rot).
 """
 import argparse
 import datetime
@@ -65,13 +68,45 @@ def run_tool(tool, mesh, out_dir, samples, target, cad, error, threads, strategy
     return data
 
 
-def per_mesh(args, tool, mesh_dir, name, category, genus, tmp):
+# The simplifier's spike threshold on the stability ratio.
+SPIKE_THRESHOLD = 0.025
+
+
+def spike_edges_percent(ma_path):
+    """Share of the edges (face edges included) of a .ma file whose stability
+    ratio (|c1 - c2| - |r1 - r2|) / |c1 - c2| is below SPIKE_THRESHOLD."""
+    spheres, edges = [], set()
+    with open(ma_path, encoding="utf-8") as f:
+        for line in f:
+            cells = line.split()
+            if not cells:
+                continue
+            if cells[0] == "v":
+                spheres.append([float(x) for x in cells[1:5]])
+            elif cells[0] in ("e", "f"):
+                ids = [int(x) for x in cells[1:4 if cells[0] == "f" else 3]]
+                for k in range(len(ids) if len(ids) == 3 else 1):
+                    a, b = ids[k], ids[(k + 1) % len(ids)]
+                    edges.add((min(a, b), max(a, b)))
+    spikes = 0
+    for a, b in edges:
+        (x1, y1, z1, r1), (x2, y2, z2, r2) = spheres[a], spheres[b]
+        d = math.sqrt((x1 - x2) ** 2 + (y1 - y2) ** 2 + (z1 - z2) ** 2)
+        ratio = max(0.0, d - abs(r1 - r2)) / d if d > 0.0 else 0.0
+        spikes += 1 if ratio < SPIKE_THRESHOLD else 0
+    return 100.0 * spikes / len(edges) if edges else 0.0
+
+
+def per_mesh(args, tool, mesh_dir, name, category, genus, tmp, size=None):
     cad = category == "cad"
-    if args.quick:
+    if size:
+        samples, target = size
+    elif args.quick:
         samples, target = (5000, 500) if cad else (3000, 300)
     else:
         samples, target = (50000, 5000) if cad else (10000, 1000)
-    first, second = os.path.join(tmp, name + ".1"), os.path.join(tmp, name + ".2")
+    stem = os.path.join(tmp, "%s.%d" % (name, samples))
+    first, second = stem + ".1", stem + ".2"
     path = os.path.join(mesh_dir, name)
     data = run_tool(tool, path, first, samples, target, cad, True, args.threads)
     row = {"mesh": name, "category": category, "genus": genus, "samples": samples,
@@ -85,14 +120,17 @@ def per_mesh(args, tool, mesh_dir, name, category, genus, tmp):
     row.update(seconds=data["seconds"], peak_memory_mb=data["peak_memory_mb"],
                counts=data["counts"], euler=data["euler_characteristic"],
                euler_expected=1 - genus, valid=data["valid"],
-               quality=data["triangle_quality"], hausdorff=data["hausdorff"])
+               quality=data["triangle_quality"], hausdorff=data["hausdorff"],
+               spike_edges_percent=spike_edges_percent(os.path.join(first, "mat.ma")))
     # Same samples and seed, hence the same initial medial mesh.
-    qmat = run_tool(tool, path, os.path.join(tmp, name + ".qmat"), samples, target, cad, True,
-                    args.threads, "qmat")
+    qmat_dir = stem + ".qmat"
+    qmat = run_tool(tool, path, qmat_dir, samples, target, cad, True, args.threads, "qmat")
     if qmat["exit_code"] == 0:
         row["qmat"] = dict(seconds=qmat["seconds"], counts=qmat["counts"],
                            euler=qmat["euler_characteristic"], valid=qmat["valid"],
-                           quality=qmat["triangle_quality"], hausdorff=qmat["hausdorff"])
+                           quality=qmat["triangle_quality"], hausdorff=qmat["hausdorff"],
+                           spike_edges_percent=spike_edges_percent(
+                               os.path.join(qmat_dir, "mat.ma")))
     else:
         row["qmat"] = dict(failed=qmat["message"], exit_code=qmat["exit_code"])
     return row
@@ -143,8 +181,8 @@ def markdown(results):
              "| mesh | preset | samples → spheres | sampling | RVD | Voronoi | queue init |"
              " simplify (incl. queue init) | total |"
              " envelope | error eval | peak MB | V / E / F | χ (1−g) | degenerate / folded |"
-             " min angle | <30° | Q | Hausdorff % | rerun identical |",
-             "|" + "---|" * 20]
+             " min angle | <30° | Q | Hausdorff % | spike edges % | rerun identical |",
+             "|" + "---|" * 21]
     for r in results["meshes"]:
         if "failed" in r:
             lines.append("| %s | %s | failed (exit %d): %s |" % (
@@ -152,7 +190,7 @@ def markdown(results):
             continue
         s, c, q = r["seconds"], r["counts"], r["quality"]
         lines.append("| %s | %s | %d → %d | %s | %s | %s | %s | %s | %s | %s | %s | %.0f | %d / %d / %d"
-                     " | %d (%d)%s | %d / %d | %.1f° | %.0f%% | %.2f | %s | %s |" % (
+                     " | %d (%d)%s | %d / %d | %.1f° | %.0f%% | %.2f | %s | %s | %s |" % (
                          r["mesh"], r["category"], r["samples"], c["vertices"],
                          fmt(s["Sampling"]), fmt(s["RestrictedVoronoi"]),
                          fmt(s["VoronoiMedialAxis"]), fmt(s["QueueInitialisation"]),
@@ -164,11 +202,13 @@ def markdown(results):
                          q["degenerate"], q["folded"], q["mean_min_angle_deg"],
                          q["percent_min_angle_below_30"], q["mean_q"],
                          fmt(r["hausdorff"]["two_sided_percent"], 3),
+                         fmt(r["spike_edges_percent"]),
                          "yes" if r["identical_rerun"] else "NO"))
     lines += ["", "## Structural MAT (S) against Q-MAT (Q), same initial medial mesh and target",
-              "", "| mesh | Hausdorff % S / Q | simplify s S / Q | min angle S / Q |"
-              " <30° S / Q | Q S / Q | degenerate+folded S / Q | χ S / Q (1−g) |",
-              "|" + "---|" * 8]
+              "", "| mesh | samples → spheres | Hausdorff % S / Q | simplify s S / Q |"
+              " min angle S / Q | <30° S / Q | Q S / Q | degenerate+folded S / Q |"
+              " χ S / Q (1−g) | spike edges % S / Q |",
+              "|" + "---|" * 10]
     for r in results["meshes"]:
         if "failed" in r or "qmat" not in r:
             continue
@@ -178,16 +218,18 @@ def markdown(results):
                                                                    q["failed"]))
             continue
         sq, qq = r["quality"], q["quality"]
-        lines.append("| %s | %s / %s | %s / %s | %.1f° / %.1f° | %.0f%% / %.0f%% | %.2f / %.2f |"
-                     " %d / %d | %d / %d (%d) |" % (
-                         r["mesh"], fmt(r["hausdorff"]["two_sided_percent"], 3),
+        lines.append("| %s | %d → %d | %s / %s | %s / %s | %.1f° / %.1f° | %.0f%% / %.0f%% |"
+                     " %.2f / %.2f | %d / %d | %d / %d (%d) | %s / %s |" % (
+                         r["mesh"], r["samples"], r["target"],
+                         fmt(r["hausdorff"]["two_sided_percent"], 3),
                          fmt(q["hausdorff"]["two_sided_percent"], 3),
                          fmt(r["seconds"]["Simplification"]), fmt(q["seconds"]["Simplification"]),
                          sq["mean_min_angle_deg"], qq["mean_min_angle_deg"],
                          sq["percent_min_angle_below_30"], qq["percent_min_angle_below_30"],
                          sq["mean_q"], qq["mean_q"], sq["degenerate"] + sq["folded"],
                          qq["degenerate"] + qq["folded"], r["euler"], q["euler"],
-                         r["euler_expected"]))
+                         r["euler_expected"], fmt(r["spike_edges_percent"]),
+                         fmt(q["spike_edges_percent"])))
     lines += ["", "## Summary", ""]
     for key, text in results["summary"].items():
         lines.append("- %s: %s" % (key, text))
@@ -225,12 +267,18 @@ def summarize(rows):
     if ok:
         worst = max(ok, key=lambda r: r["peak_memory_mb"])
         summary["peak memory"] = "worst %.0f MB (%s)" % (worst["peak_memory_mb"], worst["mesh"])
-    for category in ("organic", "cad"):
-        values = [(r["hausdorff"]["two_sided_percent"], r["mesh"]) for r in ok
-                  if r["category"] == category]
-        if values:
-            summary["Hausdorff %s" % category] = "median %.3f%%, worst %.3f%% (%s)" % (
-                statistics.median(v for v, _ in values), *max(values))
+    groups = sorted({(r["category"], r["samples"], r["target"]) for r in ok})
+    for category, samples, target in groups:
+        group = [r for r in ok if (r["category"], r["samples"], r["target"]) ==
+                 (category, samples, target)]
+        label = "%s %d → %d" % (category, samples, target)
+        values = [(r["hausdorff"]["two_sided_percent"], r["mesh"]) for r in group]
+        summary["Hausdorff %s" % label] = "median %.3f%%, worst %.3f%% (%s)" % (
+            statistics.median(v for v, _ in values), *max(values))
+        spikes = [(r["spike_edges_percent"], r["mesh"]) for r in group]
+        summary["spike edges %s" % label] = "median %.2f%%, worst %.2f%% (%s), above 0.3%%: %d" % (
+            statistics.median(v for v, _ in spikes), *max(spikes),
+            sum(1 for v, _ in spikes if v > 0.3))
     summary["Euler characteristic ≠ 1 − genus"] = ", ".join(
         "%s (%d vs %d)" % (r["mesh"], r["euler"], r["euler_expected"]) for r in ok
         if r["euler"] != r["euler_expected"]) or "none"
@@ -299,9 +347,13 @@ def main():
         rows = []
         for name in names:
             category, genus = sources[name]
-            rows.append(per_mesh(args, tool, args.meshes, name, category, genus, tmp))
-            print("%-18s %s" % (name, "failed" if "failed" in rows[-1] else "%.2f s" % (
-                rows[-1]["seconds"]["Total"])), flush=True)
+            sizes = [None] + ([(50000, 5000)] if category == "organic" and not args.quick
+                              else [])
+            for size in sizes:
+                rows.append(per_mesh(args, tool, args.meshes, name, category, genus, tmp, size))
+                print("%-18s %6d %s" % (name, rows[-1]["samples"], "failed" if "failed" in
+                                        rows[-1] else "%.2f s" % (rows[-1]["seconds"]["Total"])),
+                      flush=True)
         scale = scaling(args, benchmark, os.path.join(
             args.meshes, "hand.obj" if args.quick else "bunny.obj"))
         sweeps = [quality_vs_size(args, tool, os.path.join(args.meshes, mesh), cad, tmp)

@@ -366,6 +366,37 @@ TEST(SharedMeshSpikes, EulerNeutralSpikeCollapsesRemoveMostSpikes)
   }
 }
 
+// A shared mesh through the one-click filter at the organic preset, and its
+// two-sided Hausdorff distance (20,000 error samples).
+struct OrganicRun
+{
+  vtkNew<vtkSurfaceFileReader> Reader;
+  vtkNew<vtkStructuralMedialAxis> Mat;
+  std::string Path;
+
+  OrganicRun(const std::string& name, vtkIdType samples, vtkIdType target, int seed = 0)
+    : Path(MeshDir + "/" + name)
+  {
+    this->Reader->SetFileName(this->Path.c_str());
+    this->Mat->SetInputConnection(this->Reader->GetOutputPort());
+    this->Mat->SetPresetToOrganic();
+    this->Mat->SetNumberOfSamples(samples);
+    this->Mat->SetTargetNumberOfVertices(target);
+    this->Mat->SetRandomSeed(seed);
+    this->Mat->SetGenerateEnvelope(false);
+  }
+  bool Present() const { return std::ifstream(this->Path).good(); }
+  double HausdorffPercent()
+  {
+    vtkNew<vtkMedialReconstructionError> error;
+    error->SetInputConnection(0, this->Reader->GetOutputPort());
+    error->SetInputConnection(1, this->Mat->GetOutputPort(0));
+    error->SetNumberOfSamples(20000);
+    error->Update();
+    return medialaxis::test::FieldValue(error->GetOutput(0), "HausdorffPercent");
+  }
+};
+
 // Simplified far (50K samples -> 1,000 spheres), an organic shape keeps its
 // parts. Under the strict link condition, tangles of fins that no collapse
 // may remove use up the vertex budget, the ears collapse instead, and a
@@ -375,28 +406,15 @@ TEST(SharedMeshSpikes, EulerNeutralSpikeCollapsesRemoveMostSpikes)
 // remove the tangles.
 TEST(SharedMeshFarSimplification, OrganicShapeKeepsItsParts)
 {
-  const std::string path = MeshDir + "/bunny.obj";
-  if (!std::ifstream(path).good())
+  OrganicRun run("bunny.obj", 50000, 1000);
+  if (!run.Present())
   {
     GTEST_SKIP() << "shared meshes not present at " << MeshDir;
   }
-  vtkNew<vtkSurfaceFileReader> reader;
-  reader->SetFileName(path.c_str());
-  vtkNew<vtkStructuralMedialAxis> mat;
-  mat->SetInputConnection(reader->GetOutputPort());
-  mat->SetPresetToOrganic();
-  mat->SetNumberOfSamples(50000);
-  mat->SetTargetNumberOfVertices(1000);
-  mat->SetGenerateEnvelope(false);
-  vtkNew<vtkMedialReconstructionError> error;
-  error->SetInputConnection(0, reader->GetOutputPort());
-  error->SetInputConnection(1, mat->GetOutputPort(0));
-  error->SetNumberOfSamples(20000);
-  error->Update();
-  vtkPolyData* out = mat->GetOutput(0);
+  const double hausdorff = run.HausdorffPercent();
+  vtkPolyData* out = run.Mat->GetOutput(0);
   medialaxis::MedialMesh mesh;
   ASSERT_EQ(medialaxis::PolyDataToMedialMesh(out, mesh), "");
-  const double hausdorff = medialaxis::test::FieldValue(error->GetOutput(0), "HausdorffPercent");
   std::cout << "bunny, 50K samples -> " << mesh.Centers.size() << " spheres: Hausdorff "
             << hausdorff << "% of the diagonal, Euler characteristic "
             << medialaxis::EulerCharacteristic(mesh) << ", "
@@ -415,21 +433,13 @@ TEST(SharedMeshFarSimplification, OrganicShapeKeepsItsParts)
 // characteristic 9, 4.3%).
 TEST(SharedMeshFarSimplification, HundredSpheresKeepTheShapeAndItsTopology)
 {
-  const std::string path = MeshDir + "/bunny.obj";
-  if (!std::ifstream(path).good())
+  OrganicRun run("bunny.obj", 50000, 100);
+  if (!run.Present())
   {
     GTEST_SKIP() << "shared meshes not present at " << MeshDir;
   }
-  vtkNew<vtkSurfaceFileReader> reader;
-  reader->SetFileName(path.c_str());
-  vtkNew<vtkStructuralMedialAxis> mat;
-  mat->SetInputConnection(reader->GetOutputPort());
-  mat->SetPresetToOrganic();
-  mat->SetNumberOfSamples(50000);
-  mat->SetTargetNumberOfVertices(100);
-  mat->SetGenerateEnvelope(false);
-  mat->Update();
-  vtkPolyData* out = mat->GetOutput(0);
+  run.Mat->Update();
+  vtkPolyData* out = run.Mat->GetOutput(0);
   medialaxis::MedialMesh mesh;
   ASSERT_EQ(medialaxis::PolyDataToMedialMesh(out, mesh), "");
   const double kept = std::min(medialaxis::test::FieldValue(out, "HausdorffWithFringeCollapses"),
@@ -449,26 +459,12 @@ TEST(SharedMeshFarSimplification, HundredSpheresKeepTheShapeAndItsTopology)
 // same (0.48%).
 TEST(SharedMeshFit, BallReachingOutAtAFoldDrawsBack)
 {
-  const std::string path = MeshDir + "/armadillo.off";
-  if (!std::ifstream(path).good())
+  OrganicRun run("armadillo.off", 50000, 5000, 3);
+  if (!run.Present())
   {
     GTEST_SKIP() << "shared meshes not present at " << MeshDir;
   }
-  vtkNew<vtkSurfaceFileReader> reader;
-  reader->SetFileName(path.c_str());
-  vtkNew<vtkStructuralMedialAxis> mat;
-  mat->SetInputConnection(reader->GetOutputPort());
-  mat->SetPresetToOrganic();
-  mat->SetNumberOfSamples(50000);
-  mat->SetTargetNumberOfVertices(5000);
-  mat->SetRandomSeed(3);
-  mat->SetGenerateEnvelope(false);
-  vtkNew<vtkMedialReconstructionError> error;
-  error->SetInputConnection(0, reader->GetOutputPort());
-  error->SetInputConnection(1, mat->GetOutputPort(0));
-  error->SetNumberOfSamples(20000);
-  error->Update();
-  const double hausdorff = medialaxis::test::FieldValue(error->GetOutput(0), "HausdorffPercent");
+  const double hausdorff = run.HausdorffPercent();
   std::cout << "armadillo, seed 3, 50K samples -> 5,000 spheres: " << hausdorff << "%\n";
   EXPECT_LT(hausdorff, 0.55);
 }

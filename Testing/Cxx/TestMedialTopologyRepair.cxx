@@ -279,3 +279,41 @@ TEST(MedialTopologyRepair, TestsOnlyEdgesTheBallsFreeOfSurfaceLeaveOpen)
   EXPECT_TRUE(result.Mesh.Edges.empty());
   EXPECT_EQ(Pieces(result.Mesh), 2u);
 }
+
+TEST(MedialTopologyRepair, CapsTwoLoopsThatShareEdges)
+{
+  // Two open tubes side by side, sharing the column of edges where they
+  // touch: one piece with two loops, both spurious in a ball. Both go, and
+  // the caps leave a valid complex.
+  VoronoiMedialAxisResult result;
+  constexpr int n = 8;
+  std::vector<Index> low[2], high[2];
+  for (int tube = 0; tube < 2; ++tube)
+  {
+    const double cx = tube == 0 ? -1.0 : 1.0;
+    for (int k = 0; k < n; ++k)
+    {
+      // Tube 0's angle 0 and tube 1's angle pi are the same place: shared.
+      if (tube == 1 && k == n / 2)
+      {
+        low[1].push_back(low[0][0]);
+        high[1].push_back(high[0][0]);
+        continue;
+      }
+      const double a = 2.0 * 3.14159265358979 * k / n;
+      low[tube].push_back(AddVertex(result, { cx + std::cos(a), std::sin(a), 0.0 }));
+      high[tube].push_back(AddVertex(result, { cx + std::cos(a), std::sin(a), 1.0 }));
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      const int j = (k + 1) % n;
+      AddFace(result, low[tube][k], low[tube][j], high[tube][j]);
+      AddFace(result, low[tube][k], high[tube][j], high[tube][k]);
+    }
+  }
+  ASSERT_EQ(EulerCharacteristic(result.Mesh), -1); // one piece, two loops
+  const TopologyRepairCounts counts = RepairMedialTopology(result, { 1, 0 }, BigBall());
+  EXPECT_EQ(counts.FilledHoles, 2u);
+  EXPECT_EQ(EulerCharacteristic(result.Mesh), 1);
+  EXPECT_TRUE(ValidateMedialMesh(result.Mesh).IsValid());
+}

@@ -901,7 +901,7 @@ bool FindHub(const MedialMesh& mesh, const std::vector<Index>& loop,
   }
   for (Index v : loop)
   {
-    for (double t : { 1.0 / 3.0, 2.0 / 3.0 })
+    for (double t : { 1.0 / 3.0, 2.0 / 3.0, 0.95 })
     {
       const Point3 p = centroid + t * (mesh.Centers[v] - centroid);
       if (seesAll(p))
@@ -1044,9 +1044,17 @@ TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,
     counts.FilledHoles = CapLoops(result, BoundaryLoops(result.Mesh), left, queries);
     left -= static_cast<long long>(counts.FilledHoles);
   }
-  if (left > 0)
+  // A cycle that shares an edge with one just capped waits for the next
+  // round, on the cycles of the complex as the caps left it.
+  while (left > 0)
   {
-    counts.FilledHoles += CapLoops(result, CoreCycles(result.Mesh), left, queries);
+    const std::size_t filled = CapLoops(result, CoreCycles(result.Mesh), left, queries);
+    if (filled == 0)
+    {
+      break;
+    }
+    counts.FilledHoles += filled;
+    left -= static_cast<long long>(filled);
   }
   return counts;
 }

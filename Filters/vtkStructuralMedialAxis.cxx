@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkStructuralMedialAxis.h"
+#include "Simplification/AtlasSimplifier.h"
 
 #include "vtkErrorEventText.h"
 #include "vtkMedialMeshConversion.h"
@@ -92,6 +93,39 @@ struct StageObserver
   }
 };
 
+// Runs the simplification stage and measures its output's two-sided
+// Hausdorff distance (fraction of the diagonal); negative on failure or
+// abort. Shared by the searches over counts and over fringe settings.
+struct MeasuredSimplification
+{
+  vtkStructuralMedialAxis* Outer;
+  vtkAlgorithm* Simplification;
+  StageObserver& Observer;
+  vtkNew<vtkMedialReconstructionError> Measure;
+
+  MeasuredSimplification(vtkStructuralMedialAxis* outer, vtkAlgorithm* simplification,
+    vtkPolyData* surface, StageObserver& observer)
+    : Outer(outer)
+    , Simplification(simplification)
+    , Observer(observer)
+  {
+    this->Measure->SetInputData(0, surface);
+    this->Measure->SetInputConnection(1, simplification->GetOutputPort(0));
+    this->Measure->SetNumberOfThreads(outer->GetNumberOfThreads());
+  }
+  double Run()
+  {
+    if (!this->Simplification->GetExecutive()->Update() || !this->Observer.Error.empty() ||
+      this->Outer->GetAbortExecute())
+    {
+      return -1.0;
+    }
+    this->Measure->Modified();
+    this->Measure->Update();
+    return this->Measure->GetHausdorffPercent() / 100.0;
+  }
+};
+
 struct ErrorTargetResult
 {
   int Ok = 0;
@@ -110,10 +144,7 @@ ErrorTargetResult SimplifyToErrorTarget(vtkStructuralMedialAxis* outer,
 {
   const double bound = outer->GetMaximumError();
   const double stageStart = observer.Start, stageShare = observer.Share;
-  vtkNew<vtkMedialReconstructionError> measure;
-  measure->SetInputData(0, surface);
-  measure->SetInputConnection(1, simplification->GetOutputPort(0));
-  measure->SetNumberOfThreads(outer->GetNumberOfThreads());
+  MeasuredSimplification measured(outer, simplification, surface, observer);
   ErrorTargetResult result;
   vtkIdType lastTarget = -1; // what the simplification's output now holds
   // The error at `target` vertices, or a negative value on failure or abort.
@@ -126,14 +157,7 @@ ErrorTargetResult SimplifyToErrorTarget(vtkStructuralMedialAxis* outer,
     ++result.Evaluations;
     simplifier->SetTargetNumberOfVertices(target);
     qmat->SetTargetNumberOfVertices(target);
-    if (!simplification->GetExecutive()->Update() || !observer.Error.empty() ||
-      outer->GetAbortExecute())
-    {
-      return -1.0;
-    }
-    measure->Modified();
-    measure->Update();
-    return measure->GetHausdorffPercent() / 100.0;
+    return measured.Run();
   };
   vtkIdType good = initial, bad = 0; // within the bound at `good`; beyond it at `bad`
   double goodError = -1.0;
@@ -191,7 +215,8 @@ ErrorTargetResult SimplifyToErrorTarget(vtkStructuralMedialAxis* outer,
 // 50,000 samples -> 100 spheres: 1.8% instead of 4.3%, Euler characteristic
 // 1 instead of 9); without them tubes and blobs, whose medial axis is a
 // curve or a point, shrink to it (a torus to its centre circle). The kept
-// outputs are deep copies; `fringeUsed` says which run they come from.
+// outputs are deep copies; their field data FringeCollapsesUsed says which
+// run they come from.
 struct FringeChoice
 {
   int Ok = 0;
@@ -204,10 +229,7 @@ void SimplifyWithTheCloserFringeSetting(vtkStructuralMedialAxis* outer,
   FringeChoice& choice)
 {
   const double stageStart = observer.Start, stageShare = observer.Share;
-  vtkNew<vtkMedialReconstructionError> measure;
-  measure->SetInputData(0, surface);
-  measure->SetInputConnection(1, simplifier->GetOutputPort(0));
-  measure->SetNumberOfThreads(outer->GetNumberOfThreads());
+  MeasuredSimplification measured(outer, simplifier, surface, observer);
   double errors[2] = { 0.0, 0.0 };
   for (int on = 0; on < 2; ++on)
   {
@@ -215,14 +237,11 @@ void SimplifyWithTheCloserFringeSetting(vtkStructuralMedialAxis* outer,
     observer.Share = 0.5 * stageShare;
     simplifier->SetFringeCollapses(
       on ? vtkAtlasMedialAxisSimplifier::FringeOn : vtkAtlasMedialAxisSimplifier::FringeOff);
-    if (!simplifier->GetExecutive()->Update() || !observer.Error.empty() ||
-      outer->GetAbortExecute())
+    errors[on] = measured.Run();
+    if (errors[on] < 0.0)
     {
       return;
     }
-    measure->Modified();
-    measure->Update();
-    errors[on] = measure->GetHausdorffPercent() / 100.0;
     if (on == 0 || errors[1] < errors[0])
     {
       choice.Mat->DeepCopy(simplifier->GetOutput(0));
@@ -454,9 +473,10 @@ int vtkStructuralMedialAxis::RequestData(
   std::vector<std::pair<std::string, double>> times;
   ErrorTargetResult errorTargetResult;
   FringeChoice fringeChoice;
-  // The spheres' count below which the simplifier's automatic setting turns
-  // fringe collapses off (AtlasSimplifierOptions::StrictLinkConditionVertexCount).
-  constexpr vtkIdType strictLinkConditionCount = 200;
+  // Below the count where the simplifier's automatic setting turns fringe
+  // collapses off.
+  const auto strictLinkConditionCount =
+    static_cast<vtkIdType>(medialaxis::AtlasSimplifierOptions().StrictLinkConditionVertexCount);
   const bool chooseFringe = this->Strategy == Structural && !this->PreserveSharpFeatures &&
     this->FringeCollapses == vtkAtlasMedialAxisSimplifier::FringeAutomatic &&
     this->MaximumError <= 0.0 && this->TargetNumberOfVertices < strictLinkConditionCount;

@@ -162,6 +162,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.StrictTopologyGuard = this->StrictTopologyGuard;
   options.PreserveSharpFeatures = this->PreserveSharpFeatures;
   options.InvaginatedTerm = this->InvaginatedTerm;
+  options.ClampRadiiToAtlas = this->ClampRadiiToAtlas;
   options.PreventFolds = this->PreventFolds;
   options.FringeCollapses = this->FringeCollapses == FringeOn ? medialaxis::FringeCollapseMode::On
     : this->FringeCollapses == FringeOff                      ? medialaxis::FringeCollapseMode::Off
@@ -232,6 +233,7 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StrictTopologyGuard: " << this->StrictTopologyGuard << "\n";
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
   os << indent << "InvaginatedTerm: " << this->InvaginatedTerm << "\n";
+  os << indent << "ClampRadiiToAtlas: " << this->ClampRadiiToAtlas << "\n";
   os << indent << "PreventFolds: " << this->PreventFolds << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";

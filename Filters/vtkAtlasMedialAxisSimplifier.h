@@ -127,6 +127,16 @@ public:
   ///@}
 
   ///@{
+  /// Clamp each merged sphere's radius to the distance from its centre to
+  /// the nearest surface sample of its Atlas, so that no sphere crosses the
+  /// part of the surface it stands for (default off; closer on CAD parts,
+  /// see AtlasSimplifierOptions::ClampRadiiToAtlas for the figures).
+  vtkSetMacro(ClampRadiiToAtlas, bool);
+  vtkGetMacro(ClampRadiiToAtlas, bool);
+  vtkBooleanMacro(ClampRadiiToAtlas, bool);
+  ///@}
+
+  ///@{
   /// Refuse collapses that would fold two triangles onto each other
   /// (dihedral angle below 10 degrees), until no other collapse is left
   /// (default on; off reproduces the paper, which only tests each
@@ -230,6 +240,7 @@ protected:
   bool StrictTopologyGuard = false;
   bool PreserveSharpFeatures = true;
   bool InvaginatedTerm = true;
+  bool ClampRadiiToAtlas = false;
   bool PreventFolds = true;
   int FringeCollapses = FringeAutomatic;
   bool EulerNeutralSpikeCollapses = false;

@@ -41,6 +41,7 @@
 #include <tuple>
 
 using namespace medialaxis;
+using medialaxis::test::InitialMedialAxis;
 using medialaxis::test::SimplifiedRun;
 using medialaxis::test::Simplify;
 
@@ -280,6 +281,45 @@ TEST(AtlasSimplifier, AblationsOnAnLBlock)
             << " (without the site term " << planar.MeanBulge << ")\n";
   EXPECT_GT(unfiltered.NearEdgeTriangles, full.NearEdgeTriangles);
   EXPECT_GT(planar.MeanBulge, 1.5 * full.MeanBulge);
+}
+
+TEST(AtlasSimplifier, MergedSpheresStayOutOfTheirOwnSurface)
+{
+  // A medial ball touches the part of the surface it stands for and never
+  // crosses it. The spherical quadric alone fits its cells' tangent planes in
+  // the least-squares sense and lets merged balls bulge past the samples of
+  // their Atlas where it curves; ClampRadiiToAtlas keeps every sphere within
+  // the nearest of them. Measured before the final fit, which moves spheres
+  // by its own rules.
+  const TriangleMesh dumbbell = MakeDumbbell(5.0, 1.0, 0.45, 48);
+  SimplifiedRun run = InitialMedialAxis(dumbbell, 6000);
+  auto deepest = [&](bool clamp)
+  {
+    AtlasSimplifierOptions options;
+    options.TargetNumberOfVertices = 200;
+    options.PreserveSharpFeatures = false;
+    options.FinalFit = false;
+    options.ClampRadiiToAtlas = clamp;
+    const AtlasMedialMesh out =
+      SimplifyMedialAxis(run.Initial, run.Rvd, run.Sites.Points, options).Medial;
+    double depth = 0.0; // the largest radius past the nearest own site
+    for (std::size_t v = 0; v < out.Mesh.Centers.size(); ++v)
+    {
+      double nearest = HUGE_VAL;
+      for (Index k = out.AtlasOffsets[v]; k < out.AtlasOffsets[v + 1]; ++k)
+      {
+        nearest = std::min(
+          nearest, std::sqrt(Distance2(out.Mesh.Centers[v], run.Sites.Points[out.AtlasSites[k]])));
+      }
+      depth = std::max(depth, out.Mesh.Radii[v] - nearest);
+    }
+    return depth;
+  };
+  const double clamped = deepest(true), unclamped = deepest(false);
+  std::cout << "deepest sphere past its own nearest site: " << clamped << " clamped, " << unclamped
+            << " not\n";
+  EXPECT_LE(clamped, 1e-9);
+  EXPECT_GT(unclamped, 1e-3);
 }
 
 TEST(AtlasSimplifier, OutputIsValidAndDeterministic)

@@ -80,6 +80,20 @@ struct InvaginatedEnergy
   }
 };
 
+// Eq. 11: the quadric of the regular cells plus, for cells on concave edges
+// (anchors: site and area), the squared distance from the sphere to the site.
+double EnergyAt(
+  const SphereQuadric& q, const std::vector<std::pair<Point3, double>>& anchors, const Sphere& x)
+{
+  double e = q.Evaluate(x);
+  for (const auto& [site, area] : anchors)
+  {
+    const double r = Norm(Point3{ x[0], x[1], x[2] } - site) - x[3];
+    e += area * r * r;
+  }
+  return e;
+}
+
 // The Atlas energy of paper 000 as a collapse policy: each vertex carries
 // its Atlas and the quadric of its regular cells; feature vertices snap onto
 // sharp edges and stay there.
@@ -111,6 +125,10 @@ private:
   Placement Solve(const MedialEdgeCollapse& mesh, const SphereQuadric& q,
     const std::vector<std::pair<Point3, double>>& anchors, Index a, Index b) const;
   double Weight(double spike) const;
+  double NearestAtlasSite(
+    const Point3& centre, const std::vector<Index>& A, const std::vector<Index>& B) const;
+  void ClampToAtlas(const SphereQuadric& q, const std::vector<std::pair<Point3, double>>& anchors,
+    const std::vector<Index>& A, const std::vector<Index>& B, Placement& p) const;
   // Moves feature vertex v onto its sharp edge (r = 0); with keepValid, not
   // when that would make a zero-area or folded triangle.
   enum class SnapResult
@@ -279,16 +297,7 @@ Placement AtlasPolicy::Solve(const MedialEdgeCollapse& mesh, const SphereQuadric
   const Sphere& pb = mesh.SphereOf(b);
   const Sphere mid{ 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]),
     0.5 * (pa[3] + pb[3]) };
-  auto energyAt = [&](const Sphere& x)
-  {
-    double e = q.Evaluate(x);
-    for (const auto& [site, area] : anchors)
-    {
-      const double r = Norm(Point3{ x[0], x[1], x[2] } - site) - x[3];
-      e += area * r * r;
-    }
-    return e;
-  };
+  auto energyAt = [&](const Sphere& x) { return EnergyAt(q, anchors, x); };
   Placement best;
   auto consider = [&](const Sphere& x)
   {
@@ -417,15 +426,49 @@ CollapsePolicy::Evaluation AtlasPolicy::Evaluate(
   double sumSquares = 0.0;
   const std::size_t count = mesh.MergedRingSums(a, b, sum, sumSquares);
   AddLaplacian(q, this->Options.Lambda, sum, sumSquares, count);
-  const Placement p = this->Solve(mesh, q, anchors, a, b);
+  Placement p = this->Solve(mesh, q, anchors, a, b);
+  if (this->Options.ClampRadiiToAtlas && p.Energy < HUGE_VAL && p.Target[3] > 0.0)
+  {
+    this->ClampToAtlas(q, anchors, A, B, p);
+  }
   const double cost = p.Energy < HUGE_VAL
     ? std::max(0.0, p.Energy) * this->Weight(mesh.StabilityRatio(a, b))
     : HUGE_VAL;
   return { cost, p.Target };
 }
 
+// Distance from `centre` to the nearest site of the union of two Atlases.
+double AtlasPolicy::NearestAtlasSite(
+  const Point3& centre, const std::vector<Index>& A, const std::vector<Index>& B) const
+{
+  double nearest = HUGE_VAL;
+  for (const auto* atlas : { &A, &B })
+  {
+    for (Index s : *atlas)
+    {
+      nearest = std::min(nearest, Distance2(centre, this->Site[s]));
+    }
+  }
+  return std::sqrt(nearest);
+}
+
+// No deeper into the surface than the nearest site of the merged Atlas
+// (ClampRadiiToAtlas); the energy at the clamped sphere.
+void AtlasPolicy::ClampToAtlas(const SphereQuadric& q,
+  const std::vector<std::pair<Point3, double>>& anchors, const std::vector<Index>& A,
+  const std::vector<Index>& B, Placement& p) const
+{
+  const double nearest = this->NearestAtlasSite({ p.Target[0], p.Target[1], p.Target[2] }, A, B);
+  if (p.Target[3] > nearest)
+  {
+    p.Target[3] = nearest;
+    p.Energy = EnergyAt(q, anchors, p.Target);
+  }
+}
+
 // The endpoints and the midpoint, cheapest first by the fidelity of the
-// merged Atlas, with each one's own radius (0 for feature ones).
+// merged Atlas, with each one's own radius (0 for feature ones; with
+// ClampRadiiToAtlas, no deeper than the merged Atlas' nearest site).
 std::array<Sphere, 3> AtlasPolicy::FallbackSpheres(
   const MedialEdgeCollapse& mesh, Index a, Index b) const
 {
@@ -440,6 +483,14 @@ std::array<Sphere, 3> AtlasPolicy::FallbackSpheres(
   else if (this->OnFeature(mesh, b) && !this->OnFeature(mesh, a))
   {
     candidates[0] = candidates[2] = pb;
+  }
+  if (this->Options.ClampRadiiToAtlas)
+  {
+    for (Sphere& c : candidates)
+    {
+      c[3] = std::min(
+        c[3], this->NearestAtlasSite({ c[0], c[1], c[2] }, this->Atlas[a], this->Atlas[b]));
+    }
   }
   SphereQuadric q = this->AtlasQuadric[a];
   q += this->AtlasQuadric[b];

@@ -98,6 +98,10 @@ Options:
                         with --sharp)
   --spike-collapses     the same for spike edges only: removes most spike
                         triangles of organic shapes
+  --clamp-radii         keep every merged sphere within the nearest surface
+                        sample it stands for: closer on CAD parts (median
+                        Hausdorff 0.58% -> 0.47% on 13 parts), farther on
+                        some organic shapes (default: off)
   --fit, --no-fit       after simplification, fit the spheres' centres and
                         radii to the surface, connectivity fixed (default:
                         on; structural strategy only)
@@ -151,7 +155,7 @@ struct Options
   int Adaptive = -1;         // -1: from the preset
   double MaximumError = 0.0; // 0: --target
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
-       Fillets = false, SpikeCollapses = false, QMat = false, FinalFit = true,
+       Fillets = false, SpikeCollapses = false, ClampRadii = false, QMat = false, FinalFit = true,
        FitBoundaryRadii = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   double FeatureAngle = 45.0;
@@ -333,6 +337,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--spike-collapses")
     {
       o.SpikeCollapses = true;
+    }
+    else if (arg == "--clamp-radii")
+    {
+      o.ClampRadii = true;
     }
     else if (arg == "--fit" || arg == "--no-fit")
     {
@@ -571,6 +579,7 @@ int main(int argc, char** argv)
   structural->SetFeatureNormalFiltering(o.FeatureNormalFiltering);
   structural->SetFringeCollapses(o.FringeCollapses);
   structural->SetEulerNeutralSpikeCollapses(o.SpikeCollapses);
+  structural->SetClampRadiiToAtlas(o.ClampRadii);
   structural->SetFinalFit(o.FinalFit);
   structural->SetFitSheetBoundaryRadii(o.FitBoundaryRadii);
   structural->SetStrategy(
@@ -740,6 +749,8 @@ int main(int argc, char** argv)
                                                                                 : "\"off\"")
          << ", \"euler_neutral_spike_collapses\": "
          << (structural->GetEulerNeutralSpikeCollapses() ? "true" : "false")
+         << ", \"clamp_radii_to_atlas\": "
+         << (structural->GetClampRadiiToAtlas() ? "true" : "false")
          << ", \"final_fit\": " << (structural->GetFinalFit() ? "true" : "false")
          << ", \"fit_boundary_radii\": "
          << (structural->GetFitSheetBoundaryRadii() ? "true" : "false")

@@ -449,6 +449,7 @@ int vtkStructuralMedialAxis::RequestData(
   simplifier->SetPreserveSharpFeatures(this->PreserveSharpFeatures);
   simplifier->SetFringeCollapses(this->FringeCollapses);
   simplifier->SetEulerNeutralSpikeCollapses(this->EulerNeutralSpikeCollapses);
+  simplifier->SetClampRadiiToAtlas(this->ClampRadiiToAtlas);
   simplifier->SetFinalFit(this->FinalFit);
   simplifier->SetFitSheetBoundaryRadii(this->FitSheetBoundaryRadii);
   simplifier->SetLambda(this->Lambda);
@@ -617,6 +618,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
+  os << indent << "ClampRadiiToAtlas: " << this->ClampRadiiToAtlas << "\n";
   os << indent << "FinalFit: " << this->FinalFit << "\n";
   os << indent << "FitSheetBoundaryRadii: " << this->FitSheetBoundaryRadii << "\n";
   os << indent << "Strategy: " << (this->Strategy == QMat ? "QMat" : "Structural") << "\n";

@@ -161,6 +161,16 @@ public:
   ///@}
 
   ///@{
+  /// Clamp each merged sphere's radius to the distance to the nearest surface
+  /// sample of its Atlas (see vtkAtlasMedialAxisSimplifier): closer on CAD
+  /// parts (median two-sided Hausdorff distance of the 13 CAD meshes of the
+  /// shared set 0.58% -> 0.47%), farther on some organic ones; default off.
+  vtkSetMacro(ClampRadiiToAtlas, bool);
+  vtkGetMacro(ClampRadiiToAtlas, bool);
+  vtkBooleanMacro(ClampRadiiToAtlas, bool);
+  ///@}
+
+  ///@{
   /// Let spike edges pass the link condition with collapses that keep the
   /// Euler characteristic (see vtkAtlasMedialAxisSimplifier): removes most
   /// spike triangles of organic shapes (default off: on coarse convex shapes
@@ -247,6 +257,7 @@ protected:
   bool PreserveSharpFeatures = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   bool EulerNeutralSpikeCollapses = false;
+  bool ClampRadiiToAtlas = false;
   bool FinalFit = true;
   bool FitSheetBoundaryRadii = false;
   int Strategy = Structural;

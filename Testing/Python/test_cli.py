@@ -81,6 +81,20 @@ class CommandLineTest(unittest.TestCase):
         self.assertEqual(result.returncode, 2)
         self.assertIn("--strategy must be structural or qmat", result.stderr)
 
+    def test_clamp_radii(self):
+        # The option reaches the simplifier, is reported, and the result is
+        # a valid medial mesh of the requested size.
+        sphere = self.write_sphere("sphere.vtp")
+        report = self.path("report.json")
+        result = run("--quiet", "--clamp-radii", "--no-fit", "--samples", "2000", "--target", "20",
+                     "--report", report, sphere, self.path("out"))
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(report) as f:
+            data = json.load(f)
+        self.assertTrue(data["parameters"]["clamp_radii_to_atlas"])
+        self.assertEqual(data["counts"]["vertices"], 20)
+        self.assertTrue(data["valid"])
+
     def test_unreadable_and_invalid_input(self):
         result = run(self.path("missing.obj"), self.path("out"))
         self.assertEqual(result.returncode, 3)

@@ -65,35 +65,32 @@ class CommandLineTest(unittest.TestCase):
             self.assertEqual(result.returncode, 2, bad)
             self.assertIn("--max-error", result.stderr)
 
-    def test_qmat_strategy(self):
-        sphere = self.write_sphere("sphere.vtp")
+    def run_on_sphere(self, *options, target):
+        """Runs the tool on a tessellated sphere with `options`; checks that it
+        succeeds with a valid medial mesh of `target` spheres and returns
+        the report."""
         report = self.path("report.json")
-        result = run("--quiet", "--strategy", "qmat", "--samples", "2000", "--target", "50",
-                     "--report", report, sphere, self.path("out"))
+        result = run("--quiet", *options, "--samples", "2000", "--target", str(target),
+                     "--report", report, self.write_sphere("sphere.vtp"), self.path("out"))
         self.assertEqual(result.returncode, 0, result.stderr)
         with open(report) as f:
             data = json.load(f)
-        self.assertEqual(data["parameters"]["strategy"], "qmat")
-        self.assertEqual(data["counts"]["vertices"], 50)
+        self.assertEqual(data["counts"]["vertices"], target)
         self.assertTrue(data["valid"])
+        return data
+
+    def test_qmat_strategy(self):
+        data = self.run_on_sphere("--strategy", "qmat", target=50)
+        self.assertEqual(data["parameters"]["strategy"], "qmat")
         self.assertTrue(os.path.exists(self.path("out/mat.ma")))
-        result = run("--strategy", "qem", sphere, self.path("out2"))
+        result = run("--strategy", "qem", self.path("sphere.vtp"), self.path("out2"))
         self.assertEqual(result.returncode, 2)
         self.assertIn("--strategy must be structural or qmat", result.stderr)
 
     def test_clamp_radii(self):
-        # The option reaches the simplifier, is reported, and the result is
-        # a valid medial mesh of the requested size.
-        sphere = self.write_sphere("sphere.vtp")
-        report = self.path("report.json")
-        result = run("--quiet", "--clamp-radii", "--no-fit", "--samples", "2000", "--target", "20",
-                     "--report", report, sphere, self.path("out"))
-        self.assertEqual(result.returncode, 0, result.stderr)
-        with open(report) as f:
-            data = json.load(f)
+        # The option reaches the simplifier and is reported.
+        data = self.run_on_sphere("--clamp-radii", "--no-fit", target=20)
         self.assertTrue(data["parameters"]["clamp_radii_to_atlas"])
-        self.assertEqual(data["counts"]["vertices"], 20)
-        self.assertTrue(data["valid"])
 
     def test_unreadable_and_invalid_input(self):
         result = run(self.path("missing.obj"), self.path("out"))

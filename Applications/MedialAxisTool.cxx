@@ -98,6 +98,10 @@ Options:
                         with --sharp)
   --spike-collapses     the same for spike edges only: removes most spike
                         triangles of organic shapes
+  --absorb-spikes       collapse spike edges into their larger ball first:
+                        far fewer spikes (organic 10,000 -> 1,000: at most
+                        0.32% of the edges instead of 0.53%), slightly
+                        farther (median 0.53% -> 0.55%) (default: off)
   --clamp-radii         keep every merged sphere within the nearest surface
                         sample it stands for: closer on CAD parts (median
                         Hausdorff 0.58% -> 0.47% on 13 parts), farther on
@@ -155,8 +159,8 @@ struct Options
   int Adaptive = -1;         // -1: from the preset
   double MaximumError = 0.0; // 0: --target
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
-       Fillets = false, SpikeCollapses = false, ClampRadii = false, QMat = false, FinalFit = true,
-       FitBoundaryRadii = false;
+       Fillets = false, SpikeCollapses = false, ClampRadii = false, AbsorbSpikes = false,
+       QMat = false, FinalFit = true, FitBoundaryRadii = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;
@@ -337,6 +341,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--spike-collapses")
     {
       o.SpikeCollapses = true;
+    }
+    else if (arg == "--absorb-spikes")
+    {
+      o.AbsorbSpikes = true;
     }
     else if (arg == "--clamp-radii")
     {
@@ -580,6 +588,7 @@ int main(int argc, char** argv)
   structural->SetFringeCollapses(o.FringeCollapses);
   structural->SetEulerNeutralSpikeCollapses(o.SpikeCollapses);
   structural->SetClampRadiiToAtlas(o.ClampRadii);
+  structural->SetAbsorbSpikes(o.AbsorbSpikes);
   structural->SetFinalFit(o.FinalFit);
   structural->SetFitSheetBoundaryRadii(o.FitBoundaryRadii);
   structural->SetStrategy(
@@ -749,6 +758,7 @@ int main(int argc, char** argv)
                                                                                 : "\"off\"")
          << ", \"euler_neutral_spike_collapses\": "
          << (structural->GetEulerNeutralSpikeCollapses() ? "true" : "false")
+         << ", \"absorb_spikes\": " << (structural->GetAbsorbSpikes() ? "true" : "false")
          << ", \"clamp_radii_to_atlas\": "
          << (structural->GetClampRadiiToAtlas() ? "true" : "false")
          << ", \"final_fit\": " << (structural->GetFinalFit() ? "true" : "false")

@@ -163,6 +163,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.PreserveSharpFeatures = this->PreserveSharpFeatures;
   options.InvaginatedTerm = this->InvaginatedTerm;
   options.ClampRadiiToAtlas = this->ClampRadiiToAtlas;
+  options.AbsorbSpikes = this->AbsorbSpikes;
   options.PreventFolds = this->PreventFolds;
   options.FringeCollapses = this->FringeCollapses == FringeOn ? medialaxis::FringeCollapseMode::On
     : this->FringeCollapses == FringeOff                      ? medialaxis::FringeCollapseMode::Off
@@ -234,6 +235,7 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PreserveSharpFeatures: " << this->PreserveSharpFeatures << "\n";
   os << indent << "InvaginatedTerm: " << this->InvaginatedTerm << "\n";
   os << indent << "ClampRadiiToAtlas: " << this->ClampRadiiToAtlas << "\n";
+  os << indent << "AbsorbSpikes: " << this->AbsorbSpikes << "\n";
   os << indent << "PreventFolds: " << this->PreventFolds << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";

@@ -127,6 +127,18 @@ public:
   ///@}
 
   ///@{
+  /// Spike edges (stability ratio below SpikeThreshold) collapse into the
+  /// larger ball, unchanged, ahead of everything else (see
+  /// AtlasSimplifierOptions::AbsorbSpikes): far fewer spike edges (16
+  /// organic meshes at 10,000 samples -> 1,000 spheres: at most 0.32%
+  /// instead of 0.53%) at a slightly larger distance (median 0.526% ->
+  /// 0.549%). Default off.
+  vtkSetMacro(AbsorbSpikes, bool);
+  vtkGetMacro(AbsorbSpikes, bool);
+  vtkBooleanMacro(AbsorbSpikes, bool);
+  ///@}
+
+  ///@{
   /// Clamp each merged sphere's radius to the distance from its centre to
   /// the nearest surface sample of its Atlas, so that no sphere crosses the
   /// part of the surface it stands for (default off; closer on CAD parts,
@@ -241,6 +253,7 @@ protected:
   bool PreserveSharpFeatures = true;
   bool InvaginatedTerm = true;
   bool ClampRadiiToAtlas = false;
+  bool AbsorbSpikes = false;
   bool PreventFolds = true;
   int FringeCollapses = FringeAutomatic;
   bool EulerNeutralSpikeCollapses = false;

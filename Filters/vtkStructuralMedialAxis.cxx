@@ -450,6 +450,7 @@ int vtkStructuralMedialAxis::RequestData(
   simplifier->SetFringeCollapses(this->FringeCollapses);
   simplifier->SetEulerNeutralSpikeCollapses(this->EulerNeutralSpikeCollapses);
   simplifier->SetClampRadiiToAtlas(this->ClampRadiiToAtlas);
+  simplifier->SetAbsorbSpikes(this->AbsorbSpikes);
   simplifier->SetFinalFit(this->FinalFit);
   simplifier->SetFitSheetBoundaryRadii(this->FitSheetBoundaryRadii);
   simplifier->SetLambda(this->Lambda);
@@ -619,6 +620,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
   os << indent << "ClampRadiiToAtlas: " << this->ClampRadiiToAtlas << "\n";
+  os << indent << "AbsorbSpikes: " << this->AbsorbSpikes << "\n";
   os << indent << "FinalFit: " << this->FinalFit << "\n";
   os << indent << "FitSheetBoundaryRadii: " << this->FitSheetBoundaryRadii << "\n";
   os << indent << "Strategy: " << (this->Strategy == QMat ? "QMat" : "Structural") << "\n";

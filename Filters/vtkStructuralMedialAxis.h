@@ -161,6 +161,18 @@ public:
   ///@}
 
   ///@{
+  /// Spike edges (stability ratio below SpikeThreshold) collapse into the
+  /// larger ball, unchanged, ahead of everything else (see
+  /// vtkAtlasMedialAxisSimplifier): far fewer spike edges (16
+  /// organic meshes at 10,000 samples -> 1,000 spheres: at most 0.32%
+  /// instead of 0.53%) at a slightly larger distance (median 0.526% ->
+  /// 0.549%). Default off.
+  vtkSetMacro(AbsorbSpikes, bool);
+  vtkGetMacro(AbsorbSpikes, bool);
+  vtkBooleanMacro(AbsorbSpikes, bool);
+  ///@}
+
+  ///@{
   /// Clamp each merged sphere's radius to the distance to the nearest surface
   /// sample of its Atlas (see vtkAtlasMedialAxisSimplifier): closer on CAD
   /// parts (median two-sided Hausdorff distance of the 13 CAD meshes of the
@@ -258,6 +270,7 @@ protected:
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   bool EulerNeutralSpikeCollapses = false;
   bool ClampRadiiToAtlas = false;
+  bool AbsorbSpikes = false;
   bool FinalFit = true;
   bool FitSheetBoundaryRadii = false;
   int Strategy = Structural;

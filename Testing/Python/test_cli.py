@@ -87,10 +87,14 @@ class CommandLineTest(unittest.TestCase):
         self.assertEqual(result.returncode, 2)
         self.assertIn("--strategy must be structural or qmat", result.stderr)
 
-    def test_clamp_radii(self):
-        # The option reaches the simplifier and is reported.
+    def test_clamp_radii_and_absorb_spikes(self):
+        # The options reach the simplifier and are reported.
         data = self.run_on_sphere("--clamp-radii", "--no-fit", target=20)
         self.assertTrue(data["parameters"]["clamp_radii_to_atlas"])
+        self.assertFalse(data["parameters"]["absorb_spikes"])
+        data = self.run_on_sphere("--absorb-spikes", target=20)
+        self.assertTrue(data["parameters"]["absorb_spikes"])
+        self.assertFalse(data["parameters"]["clamp_radii_to_atlas"])
 
     def test_unreadable_and_invalid_input(self):
         result = run(self.path("missing.obj"), self.path("out"))

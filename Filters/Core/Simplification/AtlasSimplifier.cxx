@@ -124,7 +124,9 @@ public:
 private:
   Placement Solve(const MedialEdgeCollapse& mesh, const SphereQuadric& q,
     const std::vector<std::pair<Point3, double>>& anchors, Index a, Index b) const;
-  double Weight(double spike) const;
+  // Psi (Eq. 16); with the sharpness of absorbed spikes (AbsorbSpikes) when
+  // `absorbed`.
+  double Weight(double spike, bool absorbed) const;
   double NearestAtlasSite(
     const Point3& centre, const std::vector<Index>& A, const std::vector<Index>& B) const;
   void ClampToAtlas(const SphereQuadric& q, const std::vector<std::pair<Point3, double>>& anchors,
@@ -278,9 +280,11 @@ void AtlasPolicy::UpdateFeature(Index v)
   this->Feature[v] = convex && !concave ? 1 : 0;
 }
 
-double AtlasPolicy::Weight(double spike) const
+double AtlasPolicy::Weight(double spike, bool absorbed) const
 {
-  const double t = this->Options.SpikeSharpness * (spike - this->Options.SpikeThreshold);
+  const double sharpness =
+    absorbed ? this->Options.SpikeRemovalSharpness : this->Options.SpikeSharpness;
+  const double t = sharpness * (spike - this->Options.SpikeThreshold);
   // Past 40, exp(-t) < 2^-57 and 1 + exp(-t) rounds to exactly 1: most
   // edges (stability ratio above 0.43 at the default sharpness) skip the call.
   if (t > 40.0)
@@ -427,13 +431,23 @@ CollapsePolicy::Evaluation AtlasPolicy::Evaluate(
   const std::size_t count = mesh.MergedRingSums(a, b, sum, sumSquares);
   AddLaplacian(q, this->Options.Lambda, sum, sumSquares, count);
   Placement p = this->Solve(mesh, q, anchors, a, b);
+  const double ratio = mesh.StabilityRatio(a, b);
+  const bool absorbed = this->Options.AbsorbSpikes && ratio < this->Options.SpikeThreshold &&
+    p.Energy < HUGE_VAL && !this->OnFeature(mesh, a) && !this->OnFeature(mesh, b);
+  if (absorbed)
+  {
+    // The smaller ball, almost inside the larger, is absorbed by it.
+    const Sphere& larger =
+      mesh.SphereOf(b)[3] > mesh.SphereOf(a)[3] ? mesh.SphereOf(b) : mesh.SphereOf(a);
+    p.Target = larger;
+    p.Energy = EnergyAt(q, anchors, larger);
+  }
   if (this->Options.ClampRadiiToAtlas && p.Energy < HUGE_VAL && p.Target[3] > 0.0)
   {
     this->ClampToAtlas(q, anchors, A, B, p);
   }
-  const double cost = p.Energy < HUGE_VAL
-    ? std::max(0.0, p.Energy) * this->Weight(mesh.StabilityRatio(a, b))
-    : HUGE_VAL;
+  const double cost =
+    p.Energy < HUGE_VAL ? std::max(0.0, p.Energy) * this->Weight(ratio, absorbed) : HUGE_VAL;
   return { cost, p.Target };
 }
 
@@ -644,6 +658,7 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   c.TargetNumberOfVertices = o.TargetNumberOfVertices;
   c.MaximumCost = o.MaximumCost;
   c.SpikeThreshold = o.SpikeThreshold;
+  c.RequeueSpikes = o.AbsorbSpikes;
   c.TopologyGuardVertexCount = o.TopologyGuardVertexCount;
   c.FringeCollapses = UsesFringeCollapses(o);
   c.EulerNeutralSpikeCollapses = o.EulerNeutralSpikeCollapses;

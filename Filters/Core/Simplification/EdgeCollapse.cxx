@@ -127,7 +127,7 @@ MedialEdgeCollapse::Candidate MedialEdgeCollapse::MakeCandidate(
   return { e.Cost, a, b, this->Version[a], this->Version[b], e.Target };
 }
 
-void MedialEdgeCollapse::PushAllEdges()
+void MedialEdgeCollapse::PushAllEdges(bool spikesOnly)
 {
   std::vector<std::array<Index, 2>> edges;
   for (std::size_t v = 0; v < this->Spheres.size(); ++v)
@@ -138,7 +138,9 @@ void MedialEdgeCollapse::PushAllEdges()
     }
     for (Index u : this->VertexNeighbours[v])
     {
-      if (static_cast<Index>(v) < u)
+      if (static_cast<Index>(v) < u &&
+        (!spikesOnly ||
+          this->StabilityRatio(static_cast<Index>(v), u) < this->Options.SpikeThreshold))
       {
         edges.push_back({ static_cast<Index>(v), u });
       }
@@ -199,6 +201,15 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
   const std::size_t reserve = this->Options.PreventFolds
     ? std::min(urgent.size(), this->NumberAlive - std::min(this->NumberAlive, target))
     : 0;
+  if (this->Options.RequeueSpikes)
+  {
+    if (!this->CollapseUntil(target + reserve + std::max<std::size_t>(1, target / 50), progress))
+    {
+      this->Counts.Aborted = true;
+      return this->Counts;
+    }
+    this->PushAllEdges(true);
+  }
   if (!this->CollapseUntil(target + reserve, progress))
   {
     this->Counts.Aborted = true;

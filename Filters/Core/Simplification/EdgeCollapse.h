@@ -43,6 +43,10 @@ struct EdgeCollapseOptions
   /// the fold test too unless FoldTestOnSpikes.
   double SpikeThreshold = 0.025;
   bool FoldTestOnSpikes = true;
+  /// Queue every spike edge again when TargetNumberOfVertices + 2% remain:
+  /// a spike refused earlier (by the fold or link tests of a neighbourhood
+  /// that has changed since) gets another chance before the end.
+  bool RequeueSpikes = false;
   /// Below this many vertices the link condition guards every collapse.
   std::size_t TopologyGuardVertexCount = std::numeric_limits<std::size_t>::max();
   /// See AtlasSimplifierOptions::FringeCollapses and
@@ -194,7 +198,8 @@ private:
     std::vector<Candidate> Pushes; // the merged vertex's edges, re-evaluated
   };
   Candidate MakeCandidate(Index a, Index b, CollapseScratch& scratch) const;
-  void PushAllEdges();
+  /// Queues every edge (with `spikesOnly`, the spike edges).
+  void PushAllEdges(bool spikesOnly = false);
   bool CollapseUntil(std::size_t target, const std::function<bool(std::size_t)>& progress);
   std::size_t BatchLimit(std::size_t target) const;
   // The vertices within two edges of a or b (with repeats).

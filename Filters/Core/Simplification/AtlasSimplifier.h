@@ -55,10 +55,11 @@ struct AtlasSimplifierOptions
   /// the largest share 4.37% -> 1.89%. Placing the merged sphere by the
   /// energy's optimum instead (k = 1000 alone) leaves merged balls out of
   /// the surface (armadillo at 50,000 -> 5,000: 2.09%). Off by default for
-  /// now: the absorbing ball keeps its Voronoi placement, which is
-  /// ill-conditioned where samples are nearly cospherical, so that a sphere
-  /// scaled by 1e-3 or moved far from the origin no longer gives the same
-  /// medial axis within 1e-6 of its diagonal (3e-5 measured).
+  /// now: a sphere's medial axis (1,000 samples -> 50 spheres) becomes a
+  /// cluster of nearly coincident balls, on which the final fit amplifies
+  /// rounding, so that the sphere scaled by 1e-30 or moved by 1e6 no longer
+  /// gives the same result within 1e-6 of its diagonal (3e-3; 1e-9 without
+  /// the fit, and with the fit but without absorption).
   bool AbsorbSpikes = false;
   double SpikeRemovalSharpness = 1000.0;
   /// Below this many vertices the link condition guards every collapse.

@@ -73,7 +73,8 @@ Options:
   --max-error E         instead of --target: the fewest spheres whose two-sided
                         Hausdorff distance to the surface stays within E of the
                         bounding-box diagonal, as a fraction (0.005) or a
-                        percentage (0.5%); searched by about ten simplify-and-
+                        percentage (0.5%); by error-bounded collapses (one to
+                        four runs), else a search of about ten simplify-and-
                         measure runs; reached count and distance in the report
   --sharp, --no-sharp   snap spheres onto sharp convex edges (CAD) or not
   --feature-angle DEG   dihedral tolerance for sharp edges (default 45)

@@ -164,6 +164,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.InvaginatedTerm = this->InvaginatedTerm;
   options.ClampRadiiToAtlas = this->ClampRadiiToAtlas;
   options.AbsorbSpikes = this->AbsorbSpikes;
+  options.ErrorBound = this->ErrorBound;
   options.PreventFolds = this->PreventFolds;
   options.FringeCollapses = this->FringeCollapses == FringeOn ? medialaxis::FringeCollapseMode::On
     : this->FringeCollapses == FringeOff                      ? medialaxis::FringeCollapseMode::Off
@@ -214,6 +215,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   medialaxis::AddFieldDouble(
     output, "QueueInitialisationSeconds", result.QueueInitialisationSeconds);
   medialaxis::AddFieldDouble(output, "FitSeconds", result.FitSeconds);
+  medialaxis::AddFieldDouble(output, "ErrorBound", this->ErrorBound);
   medialaxis::AddFieldDouble(output, "FitRMSBefore", result.Fit.InitialRms);
   medialaxis::AddFieldDouble(output, "FitRMSAfter", result.Fit.FinalRms);
 
@@ -236,6 +238,7 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InvaginatedTerm: " << this->InvaginatedTerm << "\n";
   os << indent << "ClampRadiiToAtlas: " << this->ClampRadiiToAtlas << "\n";
   os << indent << "AbsorbSpikes: " << this->AbsorbSpikes << "\n";
+  os << indent << "ErrorBound: " << this->ErrorBound << "\n";
   os << indent << "PreventFolds: " << this->PreventFolds << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";

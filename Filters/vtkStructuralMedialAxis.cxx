@@ -159,6 +159,43 @@ ErrorTargetResult SimplifyToErrorTarget(vtkStructuralMedialAxis* outer,
     qmat->SetTargetNumberOfVertices(target);
     return measured.Run();
   };
+  // Structural MAT: error-bounded collapses (vtkAtlasMedialAxisSimplifier::
+  // ErrorBound), as far as they go, at local bounds of the bound, a half, a
+  // quarter and an eighth of it; the first whose two-sided distance is within
+  // the bound is the result. The local error misses what later collapses
+  // around a sphere do to its Atlas and the envelope between the samples, so
+  // the distance measured can exceed the local bound (bunny, 10,000 samples:
+  // local 0.5% gives 0.75%, local 0.25% 0.46% with 396 spheres, where the
+  // count search below ends at 21,862 spheres after six runs, the distance
+  // not growing steadily as spheres go). Organic shapes use fringe
+  // collapses, as at vertex targets of 200 and more.
+  if (simplification == simplifier)
+  {
+    const int fringe = simplifier->GetFringeCollapses();
+    if (fringe == vtkAtlasMedialAxisSimplifier::FringeAutomatic &&
+      !outer->GetPreserveSharpFeatures())
+    {
+      simplifier->SetFringeCollapses(vtkAtlasMedialAxisSimplifier::FringeOn);
+    }
+    for (int halvings = 0; halvings < 4; ++halvings)
+    {
+      simplifier->SetErrorBound(std::ldexp(bound, -halvings));
+      const double error = evaluate(1);
+      if (error < 0.0)
+      {
+        return result;
+      }
+      if (error <= bound)
+      {
+        result.Hausdorff = error;
+        result.Ok = 1;
+        return result;
+      }
+    }
+    // None within: the vertex count is searched.
+    simplifier->SetErrorBound(0.0);
+    simplifier->SetFringeCollapses(fringe);
+  }
   vtkIdType good = initial, bad = 0; // within the bound at `good`; beyond it at `bad`
   double goodError = -1.0;
   for (vtkIdType target = initial / 2; target >= 1; target /= 2)

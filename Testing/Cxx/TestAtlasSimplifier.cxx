@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Atlas-guided simplification: ground truth on a torus, validity,
 // determinism and Atlas bookkeeping, on a sphere, a capsule and a torus.
+#include "Envelope/EnvelopeDistance.h"
 #include "Geometry/Vec3.h"
 #include "Mesh/MedialMeshQuality.h"
 #include "Sampling/BlueNoiseSampler.h"
@@ -320,6 +321,69 @@ TEST(AtlasSimplifier, MergedSpheresStayOutOfTheirOwnSurface)
             << " not\n";
   EXPECT_LE(clamped, 1e-9);
   EXPECT_GT(unclamped, 1e-3);
+}
+
+TEST(AtlasSimplifier, ErrorBoundedCollapsesKeepAThinPart)
+{
+  // A thin square plate (thickness 5% of its side) around a thick boss:
+  // simplified as far as a local error bound of 0.5% of the diagonal lets
+  // it go, the plate keeps its sheet out to the rim and the envelope stays
+  // close; simplified further (by a vertex target), parts of the surface
+  // are left far from the envelope.
+  const double side = 2.0, thickness = 0.1;
+  const TriangleMesh plate = MakePlateWithBoss(side, thickness, 0.4, 0.8, 16);
+  const SimplifiedRun run = InitialMedialAxis(plate, 4000);
+  const double bound = 0.005;
+  auto simplify = [&](double errorBound, std::size_t target)
+  {
+    AtlasSimplifierOptions options;
+    options.TargetNumberOfVertices = target;
+    options.PreserveSharpFeatures = false;
+    options.FringeCollapses = FringeCollapseMode::On;
+    options.ErrorBound = errorBound;
+    return SimplifyMedialAxis(run.Initial, run.Rvd, run.Sites.Points, options);
+  };
+  const auto [lo, hi] = BoundingBox(run.Sites.Points);
+  const double diagonal = std::sqrt(Distance2(lo, hi));
+  // The largest distance from a site to the envelope (fraction of the
+  // diagonal), and how far out the sheet reaches (largest |x| or |y| of a
+  // centre in the plate's mid-plane).
+  auto measure = [&](const MedialMesh& m)
+  {
+    const MedialEnvelope envelope(m);
+    double farthest = 0.0, reach = 0.0;
+    for (const Point3& p : run.Sites.Points)
+    {
+      farthest = std::max(farthest, std::abs(envelope.SignedDistance(p).Distance));
+    }
+    for (const Point3& c : m.Centers)
+    {
+      if (std::abs(c[2]) < 0.25 * thickness)
+      {
+        reach = std::max({ reach, std::abs(c[0]), std::abs(c[1]) });
+      }
+    }
+    return std::make_pair(farthest / diagonal, reach);
+  };
+  const AtlasSimplifierResult bounded = simplify(bound, 1);
+  const MedialMesh& mesh = bounded.Medial.Mesh;
+  const std::size_t count = mesh.Centers.size();
+  ASSERT_FALSE(bounded.Aborted);
+  EXPECT_GT(count, 1u); // stopped at the bound, short of the target
+  EXPECT_LT(count, run.Initial.Mesh.Centers.size() / 10);
+  EXPECT_TRUE(ValidateMedialMesh(mesh).IsValid()) << ValidateMedialMesh(mesh).Message;
+  EXPECT_EQ(bounded.FoldingAllowedCollapses, 0u);
+  EXPECT_EQ(bounded.RelaxedCollapses, 0u);
+  const auto [boundedError, boundedReach] = measure(mesh);
+  const AtlasSimplifierResult further = simplify(0.0, count / 4);
+  const auto [furtherError, furtherReach] = measure(further.Medial.Mesh);
+  std::cout << count << " spheres within the local bound " << 100 * bound << "%: farthest site "
+            << 100 * boundedError << "%, sheet out to " << boundedReach << " of " << 0.5 * side
+            << "; " << count / 4 << " spheres: " << 100 * furtherError << "%, out to "
+            << furtherReach << "\n";
+  EXPECT_LE(boundedError, 2.0 * bound);
+  EXPECT_GT(boundedReach, 0.5 * side - 2.0 * thickness);
+  EXPECT_GT(furtherError, 2.0 * boundedError);
 }
 
 TEST(AtlasSimplifier, OutputIsValidAndDeterministic)

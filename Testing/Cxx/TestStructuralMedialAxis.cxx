@@ -348,47 +348,66 @@ TEST(StructuralMedialAxis, FewSpheresKeepTheCloserFringeSetting)
 
 TEST(StructuralMedialAxis, MaximumErrorGivesFewSpheresWithinIt)
 {
-  // A torus, whose medial axis is a circle: a dozen spheres are within 1%
-  // of the diagonal.
+  // A torus, whose medial axis is a circle: a few dozen spheres are within
+  // 1% of the diagonal (Structural MAT).
   vtkNew<vtkAnalyticShapeSource> shape;
   shape->SetShapeToTorus();
   shape->SetResolution(24);
-  auto run = [&](double maximumError, vtkIdType target)
+  auto run = [&](double maximumError, vtkIdType target, int strategy)
   {
     vtkNew<vtkStructuralMedialAxis> filter;
     filter->SetInputConnection(shape->GetOutputPort());
     filter->SetNumberOfSamples(3000);
     filter->SetMaximumError(maximumError);
     filter->SetTargetNumberOfVertices(target);
+    filter->SetStrategy(strategy);
     filter->SetGenerateEnvelope(false);
     filter->Update();
     vtkSmartPointer<vtkPolyData> mat = filter->GetOutput(0);
     return mat;
   };
-  const double bound = 0.01;
-  const vtkSmartPointer<vtkPolyData> searched = run(bound, 1000);
-  const vtkIdType count = searched->GetNumberOfPoints();
-  const double reached = test::FieldValue(searched, "ErrorTargetHausdorff");
-  std::cout << "within " << 100 * bound << "%: " << count << " of "
-            << test::FieldValue(searched, "InitialVertices") << " vertices, " << 100 * reached
-            << "% after " << test::FieldValue(searched, "ErrorTargetEvaluations")
-            << " evaluations\n";
-  EXPECT_EQ(test::FieldValue(searched, "MaximumError"), bound);
-  EXPECT_GT(reached, 0.0);
-  EXPECT_LE(reached, bound);
-  EXPECT_GT(test::FieldValue(searched, "ErrorTargetEvaluations"), 2.0);
-  // Far fewer spheres than the initial medial mesh (the vertex target of
-  // 1,000 is ignored), and exactly what that count as a target gives.
-  EXPECT_LT(count, test::FieldValue(searched, "InitialVertices") / 8);
-  EXPECT_NE(count, 1000);
-  const vtkSmartPointer<vtkPolyData> direct = run(0.0, count);
-  ASSERT_EQ(direct->GetNumberOfPoints(), count);
-  for (vtkIdType i = 0; i < count; ++i)
+  for (int strategy : { vtkStructuralMedialAxis::Structural, vtkStructuralMedialAxis::QMat })
   {
-    double a[3], b[3];
-    searched->GetPoint(i, a);
-    direct->GetPoint(i, b);
-    ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << i;
+    // (Q-MAT has no final fit: its initial medial mesh is 1.5% away.)
+    const double bound = strategy == vtkStructuralMedialAxis::QMat ? 0.03 : 0.01;
+    const vtkSmartPointer<vtkPolyData> searched = run(bound, 1000, strategy);
+    const vtkIdType count = searched->GetNumberOfPoints();
+    const double reached = test::FieldValue(searched, "ErrorTargetHausdorff");
+    const double evaluations = test::FieldValue(searched, "ErrorTargetEvaluations");
+    std::cout << (strategy == vtkStructuralMedialAxis::QMat ? "Q-MAT" : "Structural MAT")
+              << " within " << 100 * bound << "%: " << count << " of "
+              << test::FieldValue(searched, "InitialVertices") << " vertices, " << 100 * reached
+              << "% after " << evaluations << " evaluations\n";
+    EXPECT_EQ(test::FieldValue(searched, "MaximumError"), bound);
+    EXPECT_GT(reached, 0.0);
+    EXPECT_LE(reached, bound);
+    // Far fewer spheres than the initial medial mesh (the vertex target of
+    // 1,000 is ignored).
+    EXPECT_LT(count, test::FieldValue(searched, "InitialVertices") / 8);
+    EXPECT_NE(count, 1000);
+    if (strategy == vtkStructuralMedialAxis::Structural)
+    {
+      // Error-bounded collapses, at the bound or a half, quarter or eighth
+      // of it: one run each, as far as the bound lets them go.
+      EXPECT_GE(evaluations, 1.0);
+      EXPECT_LE(evaluations, 4.0);
+      const double local = test::FieldValue(searched, "ErrorBound");
+      EXPECT_EQ(local, std::ldexp(bound, 1 - static_cast<int>(evaluations)));
+      EXPECT_LT(count, 60);
+      continue;
+    }
+    // Q-MAT: the vertex count is searched, and the result is exactly what
+    // that count as a target gives.
+    EXPECT_GT(evaluations, 2.0);
+    const vtkSmartPointer<vtkPolyData> direct = run(0.0, count, strategy);
+    ASSERT_EQ(direct->GetNumberOfPoints(), count);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      double a[3], b[3];
+      searched->GetPoint(i, a);
+      direct->GetPoint(i, b);
+      ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << i;
+    }
+    EXPECT_EQ(direct->GetFieldData()->GetArray("ErrorTargetEvaluations"), nullptr);
   }
-  EXPECT_EQ(direct->GetFieldData()->GetArray("ErrorTargetEvaluations"), nullptr);
 }

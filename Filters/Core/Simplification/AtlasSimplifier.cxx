@@ -108,6 +108,9 @@ public:
     const MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) const override;
   std::array<Sphere, 3> FallbackSpheres(
     const MedialEdgeCollapse& mesh, Index a, Index b) const override;
+  bool WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b, const Sphere& target,
+    CollapseScratch& scratch) const override;
+  bool RaiseBound() override;
   void Merged(MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) override;
   std::vector<Index> Prepare(MedialEdgeCollapse& mesh) override;
   void AfterCollapse(MedialEdgeCollapse& mesh, Index a, CollapseScratch& scratch) override;
@@ -151,6 +154,8 @@ private:
 
   const AtlasSimplifierOptions& Options;
   Normalisation UnitFrame;
+  double ErrorBound = 0.0; // ErrorBound in the unit frame (0: none)
+  double Diagonal = 0.0;   // of the sites' bounding box, in the unit frame
   // Per site.
   std::vector<SphereQuadric> CellQuadric;
   std::vector<double> CellArea;
@@ -176,6 +181,8 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
   const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
   this->UnitFrame.Origin = lo;
   this->UnitFrame.Scale = extent > 0.0 ? 1.0 / extent : 1.0;
+  this->Diagonal = this->UnitFrame.Scale * std::sqrt(Distance2(lo, hi));
+  this->ErrorBound = options.ErrorBound * this->Diagonal;
 
   // Per-cell quadrics from the RVD polygons (normal and area by Newell's
   // formula: every polygon is planar, a piece of one surface triangle).
@@ -451,6 +458,81 @@ CollapsePolicy::Evaluation AtlasPolicy::Evaluate(
   return { cost, p.Target };
 }
 
+// Every site of the merged Atlas within ErrorBound of the merged vertex's
+// envelope (ball, cones to the merged neighbours, slabs of the faces that
+// stay), on either side.
+bool AtlasPolicy::WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b,
+  const Sphere& target, CollapseScratch& scratch) const
+{
+  if (!(this->ErrorBound > 0.0))
+  {
+    return true;
+  }
+  const SpherePrimitive ball{ { target[0], target[1], target[2] }, target[3] };
+  auto& cones = scratch.Cones;
+  cones.clear();
+  for (Index end : { a, b })
+  {
+    for (Index u : mesh.Neighbours(end))
+    {
+      if (u != a && u != b &&
+        (end == a || !std::binary_search(mesh.Neighbours(a).begin(), mesh.Neighbours(a).end(), u)))
+      {
+        cones.push_back(MakeCone(ball.Center, ball.Radius, mesh.Position(u), mesh.SphereOf(u)[3]));
+      }
+    }
+  }
+  auto& slabs = scratch.Slabs;
+  slabs.clear();
+  for (const auto& [face, id] : scratch.FaceKeys)
+  {
+    std::array<Point3, 3> c;
+    std::array<double, 3> r;
+    for (int k = 0; k < 3; ++k)
+    {
+      const bool merged = face[k] == a;
+      c[k] = merged ? ball.Center : mesh.Position(face[k]);
+      r[k] = merged ? ball.Radius : mesh.SphereOf(face[k])[3];
+    }
+    slabs.push_back(MakeSlab(c, r));
+  }
+  bool within = true;
+  ForEachInUnion(this->Atlas[a], this->Atlas[b],
+    [&](Index s, bool)
+    {
+      if (!within)
+      {
+        return;
+      }
+      const Point3& p = this->Site[s];
+      double d = SphereDistance(ball, p).Distance;
+      for (const ConePrimitive& cone : cones)
+      {
+        d = std::min(d, ConeDistance(cone, p).Distance);
+      }
+      for (const SlabPrimitive& slab : slabs)
+      {
+        d = std::min(d, SlabDistance(slab, p).Distance);
+      }
+      within = std::abs(d) <= this->ErrorBound;
+    });
+  return within;
+}
+
+bool AtlasPolicy::RaiseBound()
+{
+  if (!this->Options.RaiseErrorBound || !(this->ErrorBound > 0.0))
+  {
+    return false;
+  }
+  this->ErrorBound *= 1.5;
+  if (this->ErrorBound > this->Diagonal)
+  {
+    this->ErrorBound = 0.0; // no bound left
+  }
+  return true;
+}
+
 // Distance from `centre` to the nearest site of the union of two Atlases.
 double AtlasPolicy::NearestAtlasSite(
   const Point3& centre, const std::vector<Index>& A, const std::vector<Index>& B) const
@@ -665,6 +747,7 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   c.StrictLinkConditionVertexCount = o.StrictLinkConditionVertexCount;
   c.StrictTopologyGuard = o.StrictTopologyGuard;
   c.PreventFolds = o.PreventFolds;
+  c.StopWhenStalled = o.ErrorBound > 0.0 && !o.RaiseErrorBound;
   // With sharp features (CAD) the strictly sequential order (checked ahead
   // on a second thread, with the same result): which medial vertices end up
   // on a fillet's centre line depends on the order, and the fillet

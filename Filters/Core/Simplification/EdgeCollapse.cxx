@@ -203,14 +203,15 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
     : 0;
   if (this->Options.RequeueSpikes)
   {
-    if (!this->CollapseUntil(target + reserve + std::max<std::size_t>(1, target / 50), progress))
+    if (!this->CollapseWithinBounds(
+          target + reserve + std::max<std::size_t>(1, target / 50), progress))
     {
       this->Counts.Aborted = true;
       return this->Counts;
     }
     this->PushAllEdges(true);
   }
-  if (!this->CollapseUntil(target + reserve, progress))
+  if (!this->CollapseWithinBounds(target + reserve, progress))
   {
     this->Counts.Aborted = true;
     return this->Counts;
@@ -228,7 +229,7 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
   // other: where a tube's thin sheets must shrink to a curve, the last
   // strips of sliver triangles cannot collapse otherwise. Go on without the
   // fold guard and count those collapses.
-  if (this->NumberAlive > target && this->FoldGuard)
+  if (this->NumberAlive > target && this->FoldGuard && !this->Options.StopWhenStalled)
   {
     this->FoldGuard = false;
     this->FoldsAllowedAtLast = true;
@@ -243,7 +244,7 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
   // as in a contractible but non-collapsible "foam" of sheets): unless the
   // guard is strict, reach the target anyway and count those collapses.
   if (this->NumberAlive > target && this->NumberAlive <= this->Options.TopologyGuardVertexCount &&
-    !this->Options.StrictTopologyGuard)
+    !this->Options.StrictTopologyGuard && !this->Options.StopWhenStalled)
   {
     this->Relaxed = true;
     this->PushAllEdges();
@@ -255,6 +256,23 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
   }
   report(1.0);
   return this->Counts;
+}
+
+bool MedialEdgeCollapse::CollapseWithinBounds(
+  std::size_t target, const std::function<bool(std::size_t)>& progress)
+{
+  for (;;)
+  {
+    if (!this->CollapseUntil(target, progress))
+    {
+      return false;
+    }
+    if (this->NumberAlive <= target || !this->Policy.RaiseBound())
+    {
+      return true;
+    }
+    this->PushAllEdges();
+  }
 }
 
 MedialMesh MedialEdgeCollapse::Output(std::vector<Index>& outputToInput) const

@@ -7,6 +7,7 @@
 
 #include "Geometry/Vec3.h"
 #include "Mesh/MedialMesh.h"
+#include "Mesh/MedialPrimitives.h"
 #include "Simplification/CollapseQueue.h"
 #include "Simplification/EdgeCollapseCounts.h"
 
@@ -71,6 +72,11 @@ struct EdgeCollapseOptions
   /// candidate's validity there while the current one collapses. The same
   /// result either way; off only to compare with the plain loop.
   bool CheckAhead = true;
+  /// The policy bounds the collapses itself (CollapsePolicy::WithinBound):
+  /// when none within the bound is left, the simplification ends there,
+  /// short of the target, instead of lifting the fold guard and the link
+  /// condition to reach it.
+  bool StopWhenStalled = false;
   /// Fraction in [0, 1]; returning false aborts.
   std::function<bool(double)> Progress;
 };
@@ -82,6 +88,8 @@ struct CollapseScratch
   // For policies.
   std::vector<std::pair<Point3, double>> Anchors;
   std::vector<Index> Indices;
+  std::vector<ConePrimitive> Cones;
+  std::vector<SlabPrimitive> Slabs;
   // For the validity checks, reused to spare allocations on every collapse.
   std::vector<std::pair<std::array<Index, 3>, Index>> FaceKeys;
   std::vector<Index> MergedAway, MergedNeighbours;
@@ -115,6 +123,19 @@ public:
   /// several threads at once while the mesh does not change.
   virtual Evaluation Evaluate(
     const MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch) const = 0;
+  /// Whether merging b into a at `target` stays within the policy's own
+  /// bound (e.g. on the local reconstruction error; see
+  /// EdgeCollapseOptions::StopWhenStalled). Called after the validity checks
+  /// pass, with scratch.FaceKeys holding the faces that stay (b renamed a),
+  /// from several threads at once while the mesh does not change.
+  virtual bool WithinBound(
+    const MedialEdgeCollapse&, Index, Index, const Sphere&, CollapseScratch&) const
+  {
+    return true;
+  }
+  /// At a stall short of the target: raise that bound and return true (every
+  /// edge is then queued again), or return false to stall.
+  virtual bool RaiseBound() { return false; }
   /// The spheres to try, best first, when the optimal one breaks validity.
   virtual std::array<Sphere, 3> FallbackSpheres(
     const MedialEdgeCollapse& mesh, Index a, Index b) const = 0;
@@ -201,6 +222,9 @@ private:
   /// Queues every edge (with `spikesOnly`, the spike edges).
   void PushAllEdges(bool spikesOnly = false);
   bool CollapseUntil(std::size_t target, const std::function<bool(std::size_t)>& progress);
+  // CollapseUntil, raising the policy's bound at every stall short of
+  // `target` (CollapsePolicy::RaiseBound) while it lets it.
+  bool CollapseWithinBounds(std::size_t target, const std::function<bool(std::size_t)>& progress);
   std::size_t BatchLimit(std::size_t target) const;
   // The vertices within two edges of a or b (with repeats).
   void GatherRegion(Index a, Index b, std::vector<Index>& region) const;

@@ -114,7 +114,8 @@ bool MedialEdgeCollapse::CollapseIsValid(
   {
     return false;
   }
-  return true;
+  // A fold repair undoes what forced moves did, whatever the bound.
+  return scratch.FewerFolds || this->Policy.WithinBound(*this, a, b, target, scratch);
 }
 
 void MedialEdgeCollapse::ApplyCollapse(

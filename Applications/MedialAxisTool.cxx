@@ -97,6 +97,12 @@ Options:
                         kept: on for most organic shapes, off for tubes and
                         blobs, whose medial axis is a curve or a point; off
                         with --sharp)
+  --error-bands, --no-error-bands
+                        take the collapses in the paper's cost order within
+                        bands of local error (closer to the surface for the
+                        same number of spheres, with more spike edges), or
+                        not (default: on without --sharp when the target is
+                        at least 200 spheres)
   --spike-collapses     the same for spike edges only: removes most spike
                         triangles of organic shapes
   --absorb-spikes       collapse spike edges into their larger ball first:
@@ -163,6 +169,7 @@ struct Options
        Fillets = false, SpikeCollapses = false, ClampRadii = false, AbsorbSpikes = false,
        QMat = false, FinalFit = true, FitBoundaryRadii = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
+  int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;
   int Seed = 0, Threads = 0;
@@ -338,6 +345,14 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--no-fringe-collapses")
     {
       o.FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeOff;
+    }
+    else if (arg == "--error-bands")
+    {
+      o.ErrorBands = vtkAtlasMedialAxisSimplifier::BandsOn;
+    }
+    else if (arg == "--no-error-bands")
+    {
+      o.ErrorBands = vtkAtlasMedialAxisSimplifier::BandsOff;
     }
     else if (arg == "--spike-collapses")
     {
@@ -587,6 +602,7 @@ int main(int argc, char** argv)
   structural->SetFeatureAngle(o.FeatureAngle);
   structural->SetFeatureNormalFiltering(o.FeatureNormalFiltering);
   structural->SetFringeCollapses(o.FringeCollapses);
+  structural->SetErrorBands(o.ErrorBands);
   structural->SetEulerNeutralSpikeCollapses(o.SpikeCollapses);
   structural->SetClampRadiiToAtlas(o.ClampRadii);
   structural->SetAbsorbSpikes(o.AbsorbSpikes);
@@ -757,6 +773,10 @@ int main(int argc, char** argv)
          << (o.FringeCollapses == vtkAtlasMedialAxisSimplifier::FringeAutomatic ? "\"automatic\""
                 : o.FringeCollapses == vtkAtlasMedialAxisSimplifier::FringeOn   ? "\"on\""
                                                                                 : "\"off\"")
+         << ", \"error_bands\": "
+         << (o.ErrorBands == vtkAtlasMedialAxisSimplifier::BandsAutomatic ? "\"automatic\""
+                : o.ErrorBands == vtkAtlasMedialAxisSimplifier::BandsOn   ? "\"on\""
+                                                                          : "\"off\"")
          << ", \"euler_neutral_spike_collapses\": "
          << (structural->GetEulerNeutralSpikeCollapses() ? "true" : "false")
          << ", \"absorb_spikes\": " << (structural->GetAbsorbSpikes() ? "true" : "false")
@@ -788,6 +808,8 @@ int main(int argc, char** argv)
          << ", \"nonmanifold_edges\": " << quality.NonManifoldEdges
          << ", \"collapses\": " << FieldValue(mat, "Collapses") << ", \"fringe_collapses_used\": "
          << (FieldValue(mat, "FringeCollapsesUsed") == 1.0 ? "true" : "false")
+         << ", \"error_bands_used\": "
+         << (FieldValue(mat, "ErrorBandsUsed") == 1.0 ? "true" : "false")
          << ", \"error_target_evaluations\": " << FieldValue(mat, "ErrorTargetEvaluations")
          << ", \"error_target_hausdorff_percent\": "
          << 100.0 * FieldValue(mat, "ErrorTargetHausdorff") << "},\n"

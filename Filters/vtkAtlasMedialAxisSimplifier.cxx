@@ -165,6 +165,9 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.ClampRadiiToAtlas = this->ClampRadiiToAtlas;
   options.AbsorbSpikes = this->AbsorbSpikes;
   options.ErrorBound = this->ErrorBound;
+  options.ErrorBands = this->ErrorBands == BandsOn ? medialaxis::ErrorBandMode::On
+    : this->ErrorBands == BandsOff                 ? medialaxis::ErrorBandMode::Off
+                                                   : medialaxis::ErrorBandMode::Automatic;
   options.PreventFolds = this->PreventFolds;
   options.FringeCollapses = this->FringeCollapses == FringeOn ? medialaxis::FringeCollapseMode::On
     : this->FringeCollapses == FringeOff                      ? medialaxis::FringeCollapseMode::Off
@@ -207,6 +210,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
       { "FoldingAllowedCollapses", result.FoldingAllowedCollapses },
       { "FoldRepairCollapses", result.FoldRepairCollapses }, { "CollapseBatches", result.Batches },
       { "FringeCollapsesUsed", medialaxis::UsesFringeCollapses(options) ? 1u : 0u },
+      { "ErrorBandsUsed", medialaxis::UsesErrorBands(options) ? 1u : 0u },
       { "FitRounds", static_cast<std::size_t>(result.Fit.AcceptedRounds) } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
@@ -239,6 +243,7 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ClampRadiiToAtlas: " << this->ClampRadiiToAtlas << "\n";
   os << indent << "AbsorbSpikes: " << this->AbsorbSpikes << "\n";
   os << indent << "ErrorBound: " << this->ErrorBound << "\n";
+  os << indent << "ErrorBands: " << this->ErrorBands << "\n";
   os << indent << "PreventFolds: " << this->PreventFolds << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";

@@ -485,6 +485,7 @@ int vtkStructuralMedialAxis::RequestData(
   simplifier->SetTargetNumberOfVertices(this->TargetNumberOfVertices);
   simplifier->SetPreserveSharpFeatures(this->PreserveSharpFeatures);
   simplifier->SetFringeCollapses(this->FringeCollapses);
+  simplifier->SetErrorBands(this->ErrorBands);
   simplifier->SetEulerNeutralSpikeCollapses(this->EulerNeutralSpikeCollapses);
   simplifier->SetClampRadiiToAtlas(this->ClampRadiiToAtlas);
   simplifier->SetAbsorbSpikes(this->AbsorbSpikes);
@@ -657,6 +658,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
   os << indent << "ClampRadiiToAtlas: " << this->ClampRadiiToAtlas << "\n";
+  os << indent << "ErrorBands: " << this->ErrorBands << "\n";
   os << indent << "AbsorbSpikes: " << this->AbsorbSpikes << "\n";
   os << indent << "FinalFit: " << this->FinalFit << "\n";
   os << indent << "FitSheetBoundaryRadii: " << this->FitSheetBoundaryRadii << "\n";

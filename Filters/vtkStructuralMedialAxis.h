@@ -167,6 +167,22 @@ public:
   ///@}
 
   ///@{
+  /// Error bands (see vtkAtlasMedialAxisSimplifier::ErrorBands): collapses
+  /// go in the paper's cost order within bands of local error, so that
+  /// spheres go where they keep the envelope close. Automatic (default): on
+  /// for organic shapes simplified to at least 200 spheres. Structural
+  /// strategy only; field data ErrorBandsUsed.
+  vtkSetClampMacro(ErrorBands, int, vtkAtlasMedialAxisSimplifier::BandsOff,
+    vtkAtlasMedialAxisSimplifier::BandsAutomatic);
+  vtkGetMacro(ErrorBands, int);
+  vtkBooleanMacro(ErrorBands, int);
+  void SetErrorBandsToAutomatic()
+  {
+    this->SetErrorBands(vtkAtlasMedialAxisSimplifier::BandsAutomatic);
+  }
+  ///@}
+
+  ///@{
   /// Spike edges (stability ratio below SpikeThreshold) collapse into the
   /// larger ball, unchanged, ahead of everything else (see
   /// vtkAtlasMedialAxisSimplifier): far fewer spike edges (16
@@ -274,6 +290,7 @@ protected:
   double MaximumError = 0.0;
   bool PreserveSharpFeatures = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
+  int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
   bool EulerNeutralSpikeCollapses = false;
   bool ClampRadiiToAtlas = false;
   bool AbsorbSpikes = false;

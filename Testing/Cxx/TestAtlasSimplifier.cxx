@@ -341,6 +341,7 @@ TEST(AtlasSimplifier, ErrorBoundedCollapsesKeepAThinPart)
     options.PreserveSharpFeatures = false;
     options.FringeCollapses = FringeCollapseMode::On;
     options.ErrorBound = errorBound;
+    options.ErrorBands = ErrorBandMode::Off; // (a plain vertex target without a bound)
     return SimplifyMedialAxis(run.Initial, run.Rvd, run.Sites.Points, options);
   };
   const auto [lo, hi] = BoundingBox(run.Sites.Points);

@@ -154,8 +154,9 @@ private:
 
   const AtlasSimplifierOptions& Options;
   Normalisation UnitFrame;
-  double ErrorBound = 0.0; // ErrorBound in the unit frame (0: none)
-  double Diagonal = 0.0;   // of the sites' bounding box, in the unit frame
+  double ErrorBound = 0.0;   // ErrorBound in the unit frame (0: none)
+  double Diagonal = 0.0;     // of the sites' bounding box, in the unit frame
+  bool RaisingBound = false; // the bound rises at stalls (error bands)
   // Per site.
   std::vector<SphereQuadric> CellQuadric;
   std::vector<double> CellArea;
@@ -182,7 +183,9 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
   this->UnitFrame.Origin = lo;
   this->UnitFrame.Scale = extent > 0.0 ? 1.0 / extent : 1.0;
   this->Diagonal = this->UnitFrame.Scale * std::sqrt(Distance2(lo, hi));
-  this->ErrorBound = options.ErrorBound * this->Diagonal;
+  this->RaisingBound = UsesErrorBands(options);
+  this->ErrorBound =
+    (this->RaisingBound ? options.InitialErrorBand : options.ErrorBound) * this->Diagonal;
 
   // Per-cell quadrics from the RVD polygons (normal and area by Newell's
   // formula: every polygon is planar, a piece of one surface triangle).
@@ -505,14 +508,15 @@ bool AtlasPolicy::WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b,
         return;
       }
       const Point3& p = this->Site[s];
-      double d = SphereDistance(ball, p).Distance;
+      // (Every cone holds the ball.)
+      double d = cones.empty() ? SphereDistance(ball, p).Distance : HUGE_VAL;
       for (const ConePrimitive& cone : cones)
       {
         d = std::min(d, ConeDistance(cone, p).Distance);
       }
       for (const SlabPrimitive& slab : slabs)
       {
-        d = std::min(d, SlabDistance(slab, p).Distance);
+        d = std::min(d, SlabInteriorDistance(slab, p).Distance);
       }
       within = std::abs(d) <= this->ErrorBound;
     });
@@ -521,11 +525,11 @@ bool AtlasPolicy::WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b,
 
 bool AtlasPolicy::RaiseBound()
 {
-  if (!this->Options.RaiseErrorBound || !(this->ErrorBound > 0.0))
+  if (!this->RaisingBound || !(this->ErrorBound > 0.0))
   {
     return false;
   }
-  this->ErrorBound *= 1.5;
+  this->ErrorBound *= this->Options.ErrorBandGrowth;
   if (this->ErrorBound > this->Diagonal)
   {
     this->ErrorBound = 0.0; // no bound left
@@ -747,7 +751,7 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   c.StrictLinkConditionVertexCount = o.StrictLinkConditionVertexCount;
   c.StrictTopologyGuard = o.StrictTopologyGuard;
   c.PreventFolds = o.PreventFolds;
-  c.StopWhenStalled = o.ErrorBound > 0.0 && !o.RaiseErrorBound;
+  c.StopWhenStalled = o.ErrorBound > 0.0;
   // With sharp features (CAD) the strictly sequential order (checked ahead
   // on a second thread, with the same result): which medial vertices end up
   // on a fillet's centre line depends on the order, and the fillet
@@ -758,6 +762,24 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   return c;
 }
 } // namespace
+
+bool UsesErrorBands(const AtlasSimplifierOptions& o)
+{
+  if (o.ErrorBound > 0.0)
+  {
+    return false;
+  }
+  switch (o.ErrorBands)
+  {
+    case ErrorBandMode::On:
+      return true;
+    case ErrorBandMode::Off:
+      return false;
+    default:
+      return !o.PreserveSharpFeatures &&
+        o.TargetNumberOfVertices >= o.StrictLinkConditionVertexCount;
+  }
+}
 
 bool UsesFringeCollapses(const AtlasSimplifierOptions& o)
 {

@@ -219,7 +219,7 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
   if (reserve > 0)
   {
     this->CollapseFolds(target);
-    if (!this->CollapseUntil(target, progress))
+    if (!this->CollapseWithinBounds(target, progress))
     {
       this->Counts.Aborted = true;
       return this->Counts;
@@ -234,7 +234,7 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
     this->FoldGuard = false;
     this->FoldsAllowedAtLast = true;
     this->PushAllEdges();
-    if (!this->CollapseUntil(target, progress))
+    if (!this->CollapseWithinBounds(target, progress))
     {
       this->Counts.Aborted = true;
       return this->Counts;
@@ -248,7 +248,7 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
   {
     this->Relaxed = true;
     this->PushAllEdges();
-    if (!this->CollapseUntil(target, progress))
+    if (!this->CollapseWithinBounds(target, progress))
     {
       this->Counts.Aborted = true;
       return this->Counts;

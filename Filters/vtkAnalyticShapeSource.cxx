@@ -40,6 +40,9 @@ medialaxis::AreaVolume Exact(vtkAnalyticShapeSource* s)
       return medialaxis::LBlockAreaVolume({ s->GetXLength(), s->GetYLength(), s->GetZLength() });
     case vtkAnalyticShapeSource::DUMBBELL:
       return medialaxis::DumbbellAreaVolume(s->GetLength(), s->GetRadius(), s->GetMinorRadius());
+    case vtkAnalyticShapeSource::BLOCK_WITH_FIN:
+      return medialaxis::BlockWithFinAreaVolume(
+        { s->GetXLength(), s->GetYLength(), s->GetZLength() }, s->GetLength(), s->GetThickness());
     case vtkAnalyticShapeSource::PLATE_WITH_BOSS:
       return medialaxis::PlateWithBossAreaVolume(
         s->GetXLength(), s->GetZLength(), s->GetRadius(), s->GetLength());
@@ -93,6 +96,10 @@ int vtkAnalyticShapeSource::RequestData(
         mesh =
           medialaxis::MakeDumbbell(this->Length, this->Radius, this->MinorRadius, this->Resolution);
         break;
+      case BLOCK_WITH_FIN:
+        mesh = medialaxis::MakeBlockWithFin({ this->XLength, this->YLength, this->ZLength },
+          this->Length, this->Thickness, this->Resolution);
+        break;
       case PLATE_WITH_BOSS:
         mesh = medialaxis::MakePlateWithBoss(
           this->XLength, this->ZLength, this->Radius, this->Length, this->Resolution);
@@ -130,6 +137,7 @@ void vtkAnalyticShapeSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "XLength: " << this->XLength << " YLength: " << this->YLength
      << " ZLength: " << this->ZLength << "\n";
   os << indent << "FilletRadius: " << this->FilletRadius << "\n";
+  os << indent << "Thickness: " << this->Thickness << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "Center: (" << this->Center[0] << ", " << this->Center[1] << ", "
      << this->Center[2] << ")\n";

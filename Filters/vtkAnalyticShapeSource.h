@@ -29,6 +29,12 @@
  *   thickness, Radius and Length = radius and height of the cylindrical
  *   boss on its top face, all edges sharp): medial axis = the plate's
  *   mid-plane sheet, without holes, joined to the boss's.
+ * - BlockWithFin (XLength x YLength x ZLength block; a fin Thickness thick
+ *   along y and Length high standing on the middle of its top face, half
+ *   the block's length along x; all edges sharp): medial axis = the
+ *   block's, joined to the fin's mid-plane sheet (a thin part that
+ *   simplifying far removes first: see
+ *   vtkAtlasMedialAxisSimplifier::ErrorBound).
  *
  * Resolution is the number of segments along a quarter circle (for the sharp
  * box, along its longest side). GetExactArea() / GetExactVolume() give the
@@ -57,12 +63,13 @@ public:
     CYLINDER = 5,
     L_BLOCK = 6,
     DUMBBELL = 7,
-    PLATE_WITH_BOSS = 8
+    PLATE_WITH_BOSS = 8,
+    BLOCK_WITH_FIN = 9
   };
 
   ///@{
   /// Which shape to generate (default SPHERE).
-  vtkSetClampMacro(Shape, int, SPHERE, PLATE_WITH_BOSS);
+  vtkSetClampMacro(Shape, int, SPHERE, BLOCK_WITH_FIN);
   vtkGetMacro(Shape, int);
   void SetShapeToSphere() { this->SetShape(SPHERE); }
   void SetShapeToCapsule() { this->SetShape(CAPSULE); }
@@ -73,6 +80,7 @@ public:
   void SetShapeToLBlock() { this->SetShape(L_BLOCK); }
   void SetShapeToDumbbell() { this->SetShape(DUMBBELL); }
   void SetShapeToPlateWithBoss() { this->SetShape(PLATE_WITH_BOSS); }
+  void SetShapeToBlockWithFin() { this->SetShape(BLOCK_WITH_FIN); }
   ///@}
 
   ///@{
@@ -83,8 +91,8 @@ public:
   ///@}
 
   ///@{
-  /// Axis length of the capsule, height of the cylinder and of the plate's
-  /// boss, pole-to-pole length of the dumbbell (default 2).
+  /// Axis length of the capsule, height of the cylinder, of the plate's boss
+  /// and of the block's fin, pole-to-pole length of the dumbbell (default 2).
   vtkSetClampMacro(Length, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Length, double);
   ///@}
@@ -107,6 +115,12 @@ public:
   vtkGetMacro(YLength, double);
   vtkSetClampMacro(ZLength, double, 1e-12, VTK_DOUBLE_MAX);
   vtkGetMacro(ZLength, double);
+  ///@}
+
+  ///@{
+  /// Thickness of the block's fin (default 0.05).
+  vtkSetClampMacro(Thickness, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(Thickness, double);
   ///@}
 
   ///@{
@@ -147,6 +161,7 @@ protected:
   double YLength = 2.0;
   double ZLength = 2.0;
   double FilletRadius = 0.2;
+  double Thickness = 0.05;
   int Resolution = 16;
   double Center[3] = { 0.0, 0.0, 0.0 };
 

@@ -134,6 +134,29 @@ const ShapeCase Cases[] = {
         p[2] > 0.005 ? std::fabs(radial - 0.15) : 1e9,
         radial <= 0.15 + 1e-12 ? std::fabs(p[2] - 0.205) : 1e9 });
     } },
+  { "BlockWithFin", vtkAnalyticShapeSource::BLOCK_WITH_FIN,
+    [](vtkAnalyticShapeSource* s)
+    {
+      s->SetXLength(2.0);
+      s->SetYLength(1.0);
+      s->SetZLength(1.0);
+      s->SetLength(0.5);
+      s->SetThickness(0.02);
+    },
+    [](const double* p)
+    {
+      // The block [-1, 1] x [-0.5, 0.5] x [-0.5, 0.5]; the fin [-0.5, 0.5] x
+      // [-0.01, 0.01] x [0.5, 1].
+      const bool inBlock = std::fabs(p[0]) <= 1.0 + 1e-12 && std::fabs(p[1]) <= 0.5 + 1e-12 &&
+        std::fabs(p[2]) <= 0.5 + 1e-12;
+      const bool inFin = std::fabs(p[0]) <= 0.5 + 1e-12 && std::fabs(p[1]) <= 0.01 + 1e-12 &&
+        p[2] >= 0.5 - 1e-12 && p[2] <= 1.0 + 1e-12;
+      const double block = std::min({ std::fabs(std::fabs(p[0]) - 1.0),
+        std::fabs(std::fabs(p[1]) - 0.5), std::fabs(std::fabs(p[2]) - 0.5) });
+      const double fin = std::min({ std::fabs(std::fabs(p[0]) - 0.5),
+        std::fabs(std::fabs(p[1]) - 0.01), std::fabs(p[2] - 1.0) });
+      return std::min(inBlock ? block : 1e9, inFin ? fin : 1e9);
+    } },
 };
 
 class AnalyticShape : public ::testing::TestWithParam<ShapeCase>
@@ -207,4 +230,6 @@ TEST(AnalyticShapes, InvalidParametersAreReported)
   EXPECT_THROW(MakeDumbbell(1.0, 0.3, 0.02, 8), std::invalid_argument); // the balls overlap
   EXPECT_THROW(MakeDumbbell(1.0, 0.2, 0.25, 8), std::invalid_argument); // neck wider than balls
   EXPECT_THROW(MakePlateWithBoss(1.0, 0.01, 0.6, 0.1, 8), std::invalid_argument);
+  EXPECT_THROW(MakeBlockWithFin({ 2, 1, 1 }, 0.5, 0.6, 8), std::invalid_argument); // too thick
+  EXPECT_THROW(MakeBlockWithFin({ 2, 1, 1 }, 0.0, 0.02, 8), std::invalid_argument);
 }

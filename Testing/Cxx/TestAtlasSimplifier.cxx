@@ -325,14 +325,14 @@ TEST(AtlasSimplifier, MergedSpheresStayOutOfTheirOwnSurface)
 
 TEST(AtlasSimplifier, ErrorBoundedCollapsesKeepAThinPart)
 {
-  // A thin square plate (thickness 5% of its side) around a thick boss:
-  // simplified as far as a local error bound of 0.5% of the diagonal lets
-  // it go, the plate keeps its sheet out to the rim and the envelope stays
-  // close; simplified further (by a vertex target), parts of the surface
-  // are left far from the envelope.
-  const double side = 2.0, thickness = 0.1;
-  const TriangleMesh plate = MakePlateWithBoss(side, thickness, 0.4, 0.8, 16);
-  const SimplifiedRun run = InitialMedialAxis(plate, 4000);
+  // A block with a thin fin on top (thickness 5% of the block's length):
+  // simplified as far as a local error bound of 0.5% of the diagonal lets it
+  // go, the fin keeps its sheet up to its top edge and the envelope stays
+  // close; simplified further (by a vertex target), parts of the surface are
+  // left far from the envelope.
+  const double thickness = 0.1, top = 0.5, finTop = 1.0;
+  const TriangleMesh block = MakeBlockWithFin({ 2.0, 1.0, 1.0 }, finTop - top, thickness, 40);
+  const SimplifiedRun run = InitialMedialAxis(block, 6000);
   const double bound = 0.005;
   auto simplify = [&](double errorBound, std::size_t target)
   {
@@ -347,21 +347,21 @@ TEST(AtlasSimplifier, ErrorBoundedCollapsesKeepAThinPart)
   const auto [lo, hi] = BoundingBox(run.Sites.Points);
   const double diagonal = std::sqrt(Distance2(lo, hi));
   // The largest distance from a site to the envelope (fraction of the
-  // diagonal), and how far out the sheet reaches (largest |x| or |y| of a
-  // centre in the plate's mid-plane).
+  // diagonal), and how high the fin's sheet reaches (largest z of a centre
+  // in the fin's mid-plane, above the block).
   auto measure = [&](const MedialMesh& m)
   {
     const MedialEnvelope envelope(m);
-    double farthest = 0.0, reach = 0.0;
+    double farthest = 0.0, reach = top;
     for (const Point3& p : run.Sites.Points)
     {
       farthest = std::max(farthest, std::abs(envelope.SignedDistance(p).Distance));
     }
     for (const Point3& c : m.Centers)
     {
-      if (std::abs(c[2]) < 0.25 * thickness)
+      if (std::abs(c[1]) < 0.25 * thickness && std::abs(c[0]) < 0.5)
       {
-        reach = std::max({ reach, std::abs(c[0]), std::abs(c[1]) });
+        reach = std::max(reach, c[2]);
       }
     }
     return std::make_pair(farthest / diagonal, reach);
@@ -379,11 +379,11 @@ TEST(AtlasSimplifier, ErrorBoundedCollapsesKeepAThinPart)
   const AtlasSimplifierResult further = simplify(0.0, count / 4);
   const auto [furtherError, furtherReach] = measure(further.Medial.Mesh);
   std::cout << count << " spheres within the local bound " << 100 * bound << "%: farthest site "
-            << 100 * boundedError << "%, sheet out to " << boundedReach << " of " << 0.5 * side
-            << "; " << count / 4 << " spheres: " << 100 * furtherError << "%, out to "
-            << furtherReach << "\n";
+            << 100 * boundedError << "%, fin sheet up to z = " << boundedReach << " of " << finTop
+            << "; " << count / 4 << " spheres: " << 100 * furtherError
+            << "%, up to z = " << furtherReach << "\n";
   EXPECT_LE(boundedError, 2.0 * bound);
-  EXPECT_GT(boundedReach, 0.5 * side - 2.0 * thickness);
+  EXPECT_GT(boundedReach, finTop - thickness);
   EXPECT_GT(furtherError, 2.0 * boundedError);
 }
 

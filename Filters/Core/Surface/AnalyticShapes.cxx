@@ -306,34 +306,31 @@ TriangleMesh MakeCylinder(double radius, double height, int resolution)
   return mesh;
 }
 
-TriangleMesh MakeLBlock(const Point3& sides, int resolution)
+namespace
 {
-  for (double s : sides)
+/// The surface of a union of grid cells: every face between a cell inside
+/// and one outside (or off the grid), as two triangles over shared grid
+/// nodes. coords[a] are the node coordinates along axis a (increasing);
+/// inside(i, j, k) says whether cell (i, j, k) belongs to the union.
+template <typename Inside>
+TriangleMesh CellUnionSurface(const std::array<std::vector<double>, 3>& coords, Inside&& inside)
+{
+  const int cells[3] = { static_cast<int>(coords[0].size()) - 1,
+    static_cast<int>(coords[1].size()) - 1, static_cast<int>(coords[2].size()) - 1 };
+  auto in = [&](int i, int j, int k)
   {
-    RequirePositive(s, "L-block side");
-  }
-  // The surface of a set of grid cells: every cell face between an inside
-  // and an outside cell, as two triangles, over shared grid nodes.
-  const int n = std::max(resolution, 1);
-  const int cells[3] = { 2 * n, 2 * n, 2 * n };
-  auto inside = [&](int i, int j, int k)
-  {
-    if (i < 0 || j < 0 || k < 0 || i >= cells[0] || j >= cells[1] || k >= cells[2])
-    {
-      return false;
-    }
-    return !(i >= n && j >= n);
+    return i >= 0 && j >= 0 && k >= 0 && i < cells[0] && j < cells[1] && k < cells[2] &&
+      inside(i, j, k);
   };
   TriangleMesh mesh;
-  std::vector<Index> nodeId(static_cast<std::size_t>(2 * n + 1) * (2 * n + 1) * (2 * n + 1), -1);
+  std::vector<Index> nodeId(coords[0].size() * coords[1].size() * coords[2].size(), -1);
   auto node = [&](int i, int j, int k)
   {
-    Index& id = nodeId[(static_cast<std::size_t>(i) * (2 * n + 1) + j) * (2 * n + 1) + k];
+    Index& id = nodeId[(static_cast<std::size_t>(i) * coords[1].size() + j) * coords[2].size() + k];
     if (id < 0)
     {
       id = static_cast<Index>(mesh.Points.size());
-      mesh.Points.push_back({ sides[0] * (double(i) / cells[0] - 0.5),
-        sides[1] * (double(j) / cells[1] - 0.5), sides[2] * (double(k) / cells[2] - 0.5) });
+      mesh.Points.push_back({ coords[0][i], coords[1][j], coords[2][k] });
     }
     return id;
   };
@@ -343,7 +340,7 @@ TriangleMesh MakeLBlock(const Point3& sides, int resolution)
     {
       for (int k = 0; k < cells[2]; ++k)
       {
-        if (!inside(i, j, k))
+        if (!in(i, j, k))
         {
           continue;
         }
@@ -355,7 +352,7 @@ TriangleMesh MakeLBlock(const Point3& sides, int resolution)
           {
             int o[3] = { i, j, k };
             o[a] += side ? 1 : -1;
-            if (inside(o[0], o[1], o[2]))
+            if (in(o[0], o[1], o[2]))
             {
               continue;
             }
@@ -385,6 +382,84 @@ TriangleMesh MakeLBlock(const Point3& sides, int resolution)
     }
   }
   return mesh;
+}
+
+/// About `segments` equal steps from `from` to `to`, through every break in
+/// between (sorted).
+void AppendSteps(std::vector<double>& out, double from, double to, int segments,
+  const std::vector<double>& breaks = {})
+{
+  std::vector<double> stops{ from };
+  for (double b : breaks)
+  {
+    if (b > from && b < to)
+    {
+      stops.push_back(b);
+    }
+  }
+  stops.push_back(to);
+  const double step = (to - from) / std::max(segments, 1);
+  if (out.empty())
+  {
+    out.push_back(from);
+  }
+  for (std::size_t s = 0; s + 1 < stops.size(); ++s)
+  {
+    const int n = std::max(1, static_cast<int>(std::lround((stops[s + 1] - stops[s]) / step)));
+    for (int k = 1; k <= n; ++k)
+    {
+      out.push_back(k == n ? stops[s + 1] : stops[s] + (stops[s + 1] - stops[s]) * k / n);
+    }
+  }
+}
+}
+
+TriangleMesh MakeLBlock(const Point3& sides, int resolution)
+{
+  for (double s : sides)
+  {
+    RequirePositive(s, "L-block side");
+  }
+  const int n = std::max(resolution, 1);
+  std::array<std::vector<double>, 3> coords;
+  for (int a = 0; a < 3; ++a)
+  {
+    for (int i = 0; i <= 2 * n; ++i)
+    {
+      coords[a].push_back(sides[a] * (double(i) / (2 * n) - 0.5));
+    }
+  }
+  return CellUnionSurface(coords, [n](int i, int j, int) { return !(i >= n && j >= n); });
+}
+
+TriangleMesh MakeBlockWithFin(
+  const Point3& sides, double finHeight, double finThickness, int resolution)
+{
+  for (double s : sides)
+  {
+    RequirePositive(s, "block side");
+  }
+  RequirePositive(finHeight, "fin height");
+  RequirePositive(finThickness, "fin thickness");
+  if (!(finThickness < 0.5 * sides[1]))
+  {
+    throw std::invalid_argument("the fin must be thinner than half the block's y side");
+  }
+  const int n = std::max(resolution, 1);
+  const double spacing = std::max({ sides[0], sides[1], sides[2] }) / n;
+  const double hx = 0.25 * sides[0], ht = 0.5 * finThickness, top = 0.5 * sides[2];
+  std::array<std::vector<double>, 3> coords;
+  AppendSteps(coords[0], -0.5 * sides[0], 0.5 * sides[0],
+    static_cast<int>(std::lround(sides[0] / spacing)), { -hx, hx });
+  AppendSteps(coords[1], -0.5 * sides[1], 0.5 * sides[1],
+    static_cast<int>(std::lround(sides[1] / spacing)), { -ht, ht });
+  AppendSteps(coords[2], -top, top, static_cast<int>(std::lround(sides[2] / spacing)));
+  AppendSteps(coords[2], top, top + finHeight,
+    std::max(1, static_cast<int>(std::lround(finHeight / spacing))));
+  const auto centre = [&](int a, int i) { return 0.5 * (coords[a][i] + coords[a][i + 1]); };
+  return CellUnionSurface(coords,
+    [&](int i, int j, int k)
+    { return centre(2, k) < top || (std::abs(centre(0, i)) < hx && std::abs(centre(1, j)) < ht); });
 }
 
 namespace
@@ -857,6 +932,14 @@ AreaVolume DumbbellAreaVolume(double length, double ballRadius, double neckRadiu
       2.0 * Pi * neckRadius * neck,
     2.0 * 4.0 / 3.0 * Pi * ballRadius * ballRadius * ballRadius +
       Pi * neckRadius * neckRadius * neck };
+}
+
+AreaVolume BlockWithFinAreaVolume(const Point3& sides, double finHeight, double finThickness)
+{
+  const AreaVolume block = RoundedBoxAreaVolume(sides, 0.0);
+  const double finLength = 0.5 * sides[0];
+  return { block.Area + 2.0 * finHeight * (finLength + finThickness),
+    block.Volume + finLength * finThickness * finHeight };
 }
 
 AreaVolume PlateWithBossAreaVolume(

@@ -54,6 +54,16 @@ TriangleMesh MakeDumbbell(double length, double ballRadius, double neckRadius, i
 TriangleMesh MakePlateWithBoss(
   double side, double thickness, double bossRadius, double bossHeight, int resolution);
 
+/// A block sides[0] x sides[1] x sides[2] (centred at the origin) with a
+/// thin fin standing on the middle of its top face: finThickness along y,
+/// finHeight along z, half the block's length along x (centred); all edges
+/// sharp. Its medial axis is connected and contractible (Euler
+/// characteristic 1): the block's, joined to the fin's mid-plane sheet.
+/// `resolution` is the number of grid cells along the block's longest side;
+/// the fin's sides are divided as finely.
+TriangleMesh MakeBlockWithFin(
+  const Point3& sides, double finHeight, double finThickness, int resolution);
+
 /// A generated part whose fillet faces are known exactly: FilletId[t] is the
 /// fillet triangle t lies on, -1 for triangles on no fillet.
 struct LabelledTriangleMesh
@@ -94,6 +104,7 @@ AreaVolume TorusAreaVolume(double majorRadius, double minorRadius);
 AreaVolume CylinderAreaVolume(double radius, double height);
 AreaVolume LBlockAreaVolume(const Point3& sides);
 AreaVolume DumbbellAreaVolume(double length, double ballRadius, double neckRadius);
+AreaVolume BlockWithFinAreaVolume(const Point3& sides, double finHeight, double finThickness);
 AreaVolume PlateWithBossAreaVolume(
   double side, double thickness, double bossRadius, double bossHeight);
 }

@@ -137,7 +137,12 @@ void NoiseKeepsTheMedialAxisValid(
     EXPECT_EQ(noisy.Validity, "") << amplitude;
     EXPECT_EQ(noisy.Quality.DegenerateTriangles, 0u) << amplitude;
     EXPECT_LE(noisy.Quality.FoldedTriangles, clean.Quality.FoldedTriangles) << amplitude;
-    EXPECT_LE(noisy.HausdorffPercent, 2.0 * clean.HausdorffPercent) << amplitude;
+    // Measured against the noisy surface, whose bumps a medial mesh of
+    // 1,000 spheres smooths out: at most twice the noiseless distance plus
+    // the noise amplitude (bunny at 0.5% noise: 0.72% against 0.32%
+    // noiseless; before error bands 0.85% against 0.65%).
+    EXPECT_LE(noisy.HausdorffPercent, 2.0 * clean.HausdorffPercent + 100.0 * amplitude)
+      << amplitude;
   }
 }
 }

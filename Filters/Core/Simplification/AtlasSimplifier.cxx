@@ -4,6 +4,7 @@
 #include "Fitting/EnvelopeFit.h"
 #include "Fitting/FitPoints.h"
 
+#include "Geometry/KdTree.h"
 #include "Geometry/Vec3.h"
 #include "Simplification/EdgeCollapse.h"
 #include "Simplification/SphereQuadric.h"
@@ -18,6 +19,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <tuple>
 
 namespace medialaxis
@@ -154,9 +156,10 @@ private:
 
   const AtlasSimplifierOptions& Options;
   Normalisation UnitFrame;
-  double ErrorBound = 0.0;   // ErrorBound in the unit frame (0: none)
-  double Diagonal = 0.0;     // of the sites' bounding box, in the unit frame
-  bool RaisingBound = false; // the bound rises at stalls (error bands)
+  double ErrorBound = 0.0;          // ErrorBound in the unit frame (0: none)
+  double Diagonal = 0.0;            // of the sites' bounding box, in the unit frame
+  bool RaisingBound = false;        // the bound rises at stalls (error bands)
+  std::unique_ptr<KdTree> SiteTree; // every site, with a bound: for balls poking out
   // Per site.
   std::vector<SphereQuadric> CellQuadric;
   std::vector<double> CellArea;
@@ -194,6 +197,10 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
   for (std::size_t i = 0; i < ns; ++i)
   {
     this->Site[i] = this->UnitFrame.To(sites[i]);
+  }
+  if (this->ErrorBound > 0.0)
+  {
+    this->SiteTree = std::make_unique<KdTree>(this->Site);
   }
   this->CellQuadric.assign(ns, SphereQuadric());
   this->CellArea.assign(ns, 0.0);
@@ -498,6 +505,13 @@ bool AtlasPolicy::WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b,
       r[k] = merged ? ball.Radius : mesh.SphereOf(face[k])[3];
     }
     slabs.push_back(MakeSlab(c, r));
+  }
+  // How far the merged ball pokes out of the surface, seen from the nearest
+  // site of all (its Atlas may lie on one side of a thin part only).
+  const Point3& nearest = this->Site[this->SiteTree->Nearest(ball.Center)];
+  if (ball.Radius - std::sqrt(Distance2(ball.Center, nearest)) > this->ErrorBound)
+  {
+    return false;
   }
   bool within = true;
   ForEachInUnion(this->Atlas[a], this->Atlas[b],

@@ -145,7 +145,7 @@ public:
   /// the collapses go in the paper's cost order within bands of error and
   /// spheres go where they keep the envelope close (16 organic meshes,
   /// 10,000 samples -> 1,000 spheres: median two-sided Hausdorff distance
-  /// 0.53% -> 0.42%; -> 300 spheres 0.89% -> 0.55%), at the price of more
+  /// 0.53% -> 0.44%; -> 300 spheres 0.89% -> 0.53%), at the price of more
   /// spike edges, which cover surface the bound keeps.
   /// - Off (0): the paper's cost order alone.
   /// - On (1).
@@ -175,7 +175,8 @@ public:
   /// within the bound is left (field data `ErrorBound`; the vertex count
   /// reached is the output's). The local error is the largest distance,
   /// inside or outside, from a surface sample of the merged Atlas to the
-  /// merged sphere's ball, cones and slabs. Set TargetNumberOfVertices to 1
+  /// merged sphere's ball, cones and slabs, or how far the merged ball pokes
+  /// out of the surface past the nearest sample. Set TargetNumberOfVertices to 1
   /// to simplify as far as the bound allows. Far closer than a vertex target
   /// at the same count (bunny, 10,000 samples: bound 0.3% stops at 282
   /// spheres with a two-sided Hausdorff distance of 0.53%, where the target

@@ -479,19 +479,23 @@ bool AtlasPolicy::WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b,
     return true;
   }
   const SpherePrimitive ball{ { target[0], target[1], target[2] }, target[3] };
+  // How far the merged ball pokes out of the surface, seen from the nearest
+  // site of all (its Atlas may lie on one side of a thin part only).
+  const Point3& nearest = this->Site[this->SiteTree->Nearest(ball.Center)];
+  if (ball.Radius - std::sqrt(Distance2(ball.Center, nearest)) > this->ErrorBound)
+  {
+    return false;
+  }
   auto& cones = scratch.Cones;
   cones.clear();
-  for (Index end : { a, b })
-  {
-    for (Index u : mesh.Neighbours(end))
+  ForEachInUnion(mesh.Neighbours(a), mesh.Neighbours(b),
+    [&](Index u, bool)
     {
-      if (u != a && u != b &&
-        (end == a || !std::binary_search(mesh.Neighbours(a).begin(), mesh.Neighbours(a).end(), u)))
+      if (u != a && u != b)
       {
         cones.push_back(MakeCone(ball.Center, ball.Radius, mesh.Position(u), mesh.SphereOf(u)[3]));
       }
-    }
-  }
+    });
   auto& slabs = scratch.Slabs;
   slabs.clear();
   for (const auto& [face, id] : scratch.FaceKeys)
@@ -505,13 +509,6 @@ bool AtlasPolicy::WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b,
       r[k] = merged ? ball.Radius : mesh.SphereOf(face[k])[3];
     }
     slabs.push_back(MakeSlab(c, r));
-  }
-  // How far the merged ball pokes out of the surface, seen from the nearest
-  // site of all (its Atlas may lie on one side of a thin part only).
-  const Point3& nearest = this->Site[this->SiteTree->Nearest(ball.Center)];
-  if (ball.Radius - std::sqrt(Distance2(ball.Center, nearest)) > this->ErrorBound)
-  {
-    return false;
   }
   bool within = true;
   ForEachInUnion(this->Atlas[a], this->Atlas[b],

@@ -31,7 +31,7 @@ enum class ErrorBandMode
 {
   Off,
   On,
-  Automatic // on for organic shapes (PreserveSharpFeatures off)
+  Automatic // on for organic shapes (PreserveSharpFeatures off) at 200 vertices and more
 };
 
 struct AtlasSimplifierOptions
@@ -148,10 +148,11 @@ struct AtlasSimplifierOptions
   /// inside is surface it reaches past; and how far the merged ball pokes
   /// out of the surface past the nearest of all sites (its Atlas may lie on
   /// one side of a thin part only). The cost order stays the paper's.
-  /// Measured (before the poke check) on the bunny (10,000 samples, target 1): a bound of
-  /// 0.3% stops at 282 spheres, two-sided Hausdorff distance 0.53%, where
-  /// the vertex target 282 gives 0.98% (0.5%: 148 spheres, 0.75% against
-  /// 1.21%; 1%: 70 spheres, 1.14% against 2.03%). 0 (default): no bound.
+  /// Measured (before the poke check) on the bunny (10,000 samples, target
+  /// 1): a bound of 0.3% stops at 282 spheres, two-sided Hausdorff distance
+  /// 0.53%, where the vertex target 282 gives 0.98% (0.5%: 148 spheres,
+  /// 0.75% against 1.21%; 1%: 70 spheres, 1.14% against 2.03%). 0
+  /// (default): no bound.
   double ErrorBound = 0.0;
   /// Error bands (when ErrorBound is 0): collapses whose local error (as
   /// for ErrorBound) exceeds a bound wait; the bound starts at
@@ -171,13 +172,12 @@ struct AtlasSimplifierOptions
   /// 1,000 spheres at most 1.22% of the edges instead of 0.53%) and about
   /// 1.3x the time of the whole pipeline. Automatic (default): on for organic
   /// shapes simplified to StrictLinkConditionVertexCount (200) spheres or
-  /// more. On CAD parts the
-  /// sheets' boundary then no longer follows the fillet centre lines, which
-  /// the fillet detector needs (recall of a variable-radius fillet 0.37
-  /// instead of 0.95 or more). Below 200 spheres shapes like a sphere end as
-  /// a cluster of nearly nested balls on which the final fit amplifies
-  /// rounding (a sphere scaled by 1e-30, 1,000 samples -> 50 spheres: 6e-4
-  /// of the diagonal instead of 1e-9), as with AbsorbSpikes.
+  /// more. On CAD parts the sheets' boundary then no longer follows the
+  /// fillet centre lines, which the fillet detector needs (recall of a
+  /// variable-radius fillet 0.37 instead of 0.95 or more). Below 200 spheres shapes like a sphere
+  /// end as a cluster of nearly nested balls on which the final fit amplifies rounding (a sphere
+  /// scaled by 1e-30, 1,000 samples -> 50 spheres: 6e-4 of the diagonal instead of 1e-9), as with
+  /// AbsorbSpikes.
   ErrorBandMode ErrorBands = ErrorBandMode::Automatic;
   double InitialErrorBand = 0.001;
   double ErrorBandGrowth = 1.5;

@@ -101,8 +101,7 @@ Options:
                         take the collapses in the paper's cost order within
                         bands of local error (closer to the surface for the
                         same number of spheres, with more spike edges), or
-                        not (default: on without --sharp when the target is
-                        at least 200 spheres)
+                        not (default: on without --sharp)
   --spike-collapses     the same for spike edges only: removes most spike
                         triangles of organic shapes
   --absorb-spikes       collapse spike edges into their larger ball first:

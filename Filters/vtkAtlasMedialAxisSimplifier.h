@@ -150,11 +150,8 @@ public:
   /// - Off (0): the paper's cost order alone.
   /// - On (1).
   /// - Automatic (2, default): on for organic shapes (PreserveSharpFeatures
-  ///   off) simplified to at least 200 vertices. On CAD parts the sheets'
-  ///   boundary no longer follows the fillet centre lines (which
-  ///   vtkFilletDetector needs); below 200 vertices, blobs such as a sphere
-  ///   end as clusters of nearly nested balls on which the final fit
-  ///   amplifies rounding.
+  ///   off). On CAD parts the sheets' boundary no longer follows the fillet
+  ///   centre lines (which vtkFilletDetector needs).
   /// Field data ErrorBandsUsed says whether they were used.
   enum ErrorBandType
   {

@@ -170,7 +170,7 @@ public:
   /// Error bands (see vtkAtlasMedialAxisSimplifier::ErrorBands): collapses
   /// go in the paper's cost order within bands of local error, so that
   /// spheres go where they keep the envelope close. Automatic (default): on
-  /// for organic shapes simplified to at least 200 spheres. Structural
+  /// for organic shapes (PreserveSharpFeatures off). Structural
   /// strategy only; field data ErrorBandsUsed.
   vtkSetClampMacro(ErrorBands, int, vtkAtlasMedialAxisSimplifier::BandsOff,
     vtkAtlasMedialAxisSimplifier::BandsAutomatic);

@@ -536,7 +536,7 @@ TEST(SharedMeshErrorBands, SameSpheresCloserToTheSurface)
             << hausdorff[1] << "% within error bands\n";
   EXPECT_LT(hausdorff[1], 0.7 * hausdorff[0]);
   EXPECT_LT(hausdorff[1], 0.6);
-  // The default: on for organic shapes at 200 spheres and more.
+  // The default: on for organic shapes.
   OrganicRun automatic("bunny.obj", 10000, 300);
   automatic.Mat->Update();
   EXPECT_EQ(medialaxis::test::FieldValue(automatic.Mat->GetOutput(0), "ErrorBandsUsed"), 1.0);

@@ -146,7 +146,12 @@ double Objective(const std::vector<Correspondence>& corr, const std::vector<doub
 }
 
 /// A sphere reaching out of the surface: G = r - |c - q| > 0 with q the
-/// nearest surface point, U = (c - q) / |c - q|.
+/// nearest surface point. U, the direction in which the centre moves to
+/// draw the ball back, is (c - q) / |c - q|, averaged over the points nearly
+/// as near as q (within a quarter of G, weighted by how much nearer): where
+/// several points are equally near (a ball nearly concentric with a round
+/// part of the surface) the nearest one alone jumps with rounding, and a
+/// rounding difference in the input would send a round elsewhere.
 struct Overreach
 {
   Index V;
@@ -165,6 +170,7 @@ void MeasureOverreach(const MedialMesh& mesh, const KdTree& tree, const std::vec
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 256),
         [&](const tbb::blocked_range<std::size_t>& range)
         {
+          std::vector<std::pair<std::uint32_t, double>> inside;
           for (std::size_t v = range.begin(); v != range.end(); ++v)
           {
             if (unknown[v] < 0)
@@ -172,13 +178,31 @@ void MeasureOverreach(const MedialMesh& mesh, const KdTree& tree, const std::vec
               continue;
             }
             const Point3& c = mesh.Centers[v];
+            const double r = mesh.Radii[v];
             const Point3 d = c - points[tree.Nearest(c)];
             const double length = Norm(d);
-            const double g = mesh.Radii[v] - length;
-            if (g > 0.0 && length > 0.0)
+            const double g = r - length;
+            if (g <= 0.0 || length <= 0.0)
             {
-              all[v] = { static_cast<Index>(v), g, (1.0 / length) * d };
+              continue;
             }
+            const double band = length + 0.25 * g;
+            tree.WithinRadius(c, band, inside, false);
+            // The tree's order depends on the coordinates' rounding: sum
+            // in the points' order.
+            std::sort(inside.begin(), inside.end());
+            Point3 u{ 0, 0, 0 };
+            for (const auto& [id, squared] : inside)
+            {
+              const double distance = std::sqrt(squared);
+              if (distance > 0.0 && distance < band)
+              {
+                u = u + ((band - distance) / distance) * (c - points[id]);
+              }
+            }
+            const double norm = Norm(u);
+            all[v] = { static_cast<Index>(v), g,
+              norm > 0.0 ? (1.0 / norm) * u : (1.0 / length) * d };
           }
         });
     });

@@ -787,8 +787,7 @@ bool UsesErrorBands(const AtlasSimplifierOptions& o)
     case ErrorBandMode::Off:
       return false;
     default:
-      return !o.PreserveSharpFeatures &&
-        o.TargetNumberOfVertices >= o.StrictLinkConditionVertexCount;
+      return !o.PreserveSharpFeatures;
   }
 }
 

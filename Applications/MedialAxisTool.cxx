@@ -115,10 +115,12 @@ Options:
   --fit, --no-fit       after simplification, fit the spheres' centres and
                         radii to the surface, connectivity fixed (default:
                         on; structural strategy only)
-  --fit-boundary-radii  with --sharp, let the fit change the radii of the
+  --fit-boundary-radii, --fixed-boundary-radii
+                        with --sharp, let the fit change the radii of the
                         spheres on the sheets' boundary (fillet centre lines)
-                        too: closer (CAD median Hausdorff 0.57% -> 0.36%),
-                        but the fillets found shift a little
+                        too, or not: closer (CAD median Hausdorff 0.57% ->
+                        0.36%); the fillets are found from the radii the
+                        collapses placed either way (default: fitted)
   --seed S              sampler seed; same seed, same result (default 0)
   --threads T           threads for the parallel stages (0 = all, default)
   --envelope            also write envelope.vtp: the union of the medial
@@ -166,7 +168,7 @@ struct Options
   double MaximumError = 0.0; // 0: --target
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
        Fillets = false, SpikeCollapses = false, ClampRadii = false, AbsorbSpikes = false,
-       QMat = false, FinalFit = true, FitBoundaryRadii = false;
+       QMat = false, FinalFit = true, FitBoundaryRadii = true;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
   double FeatureAngle = 45.0;
@@ -369,9 +371,9 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     {
       o.FinalFit = arg == "--fit";
     }
-    else if (arg == "--fit-boundary-radii")
+    else if (arg == "--fit-boundary-radii" || arg == "--fixed-boundary-radii")
     {
-      o.FitBoundaryRadii = true;
+      o.FitBoundaryRadii = arg == "--fit-boundary-radii";
     }
     else if (arg == "--fillets")
     {

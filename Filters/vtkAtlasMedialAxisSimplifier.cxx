@@ -199,6 +199,17 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
     feature->SetValue(static_cast<vtkIdType>(v), m.FeatureVertex[v]);
   }
   output->GetPointData()->AddArray(feature);
+  if (!result.PlacedRadii.empty())
+  {
+    vtkNew<vtkDoubleArray> placed;
+    placed->SetName("PlacedRadius");
+    placed->SetNumberOfTuples(static_cast<vtkIdType>(result.PlacedRadii.size()));
+    for (std::size_t v = 0; v < result.PlacedRadii.size(); ++v)
+    {
+      placed->SetValue(static_cast<vtkIdType>(v), result.PlacedRadii[v]);
+    }
+    output->GetPointData()->AddArray(placed);
+  }
 
   medialaxis::AddStabilityRatios(m.Mesh, output);
   for (const auto& [name, value] :

@@ -146,6 +146,22 @@ int vtkFilletDetector::RequestData(
                   << " (connect the output of vtkAtlasMedialAxisSimplifier)");
     return 0;
   }
+  // Where the final fit changed the radii on the sheets' boundary, the
+  // rolling balls are the radii the collapses placed.
+  if (vtkDataArray* placed = matIn->GetPointData()->GetArray("PlacedRadius"))
+  {
+    if (placed->GetNumberOfComponents() != 1 ||
+      placed->GetNumberOfTuples() != static_cast<vtkIdType>(medial.Radii.size()))
+    {
+      vtkErrorMacro(<< "input port 0: point data 'PlacedRadius' must have one value per medial "
+                       "vertex (remove it to use 'Radius')");
+      return 0;
+    }
+    for (std::size_t v = 0; v < medial.Radii.size(); ++v)
+    {
+      medial.Radii[v] = placed->GetComponent(static_cast<vtkIdType>(v), 0);
+    }
+  }
   vtkDataArray* siteArray = rvd->GetCellData()->GetArray("SiteId");
   vtkDataArray* triangleArray = rvd->GetCellData()->GetArray("TriangleId");
   if (!siteArray || !triangleArray)

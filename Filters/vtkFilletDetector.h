@@ -29,7 +29,9 @@
  * refined line, their corners within FaceTolerance of its envelope.
  *
  * Inputs: port 0 the medial mesh with its Atlas (field data `AtlasSites` /
- * `AtlasOffsets`, point data `Radius`); port 1 the restricted Voronoi diagram
+ * `AtlasOffsets`, point data `Radius`; where it also has `PlacedRadius`, the
+ * radii the collapses placed before the final fit changed those on the
+ * sheets' boundary, the rolling balls are taken from it); port 1 the restricted Voronoi diagram
  * of the same sites (cell data `SiteId` and `TriangleId`: output 0 of
  * vtkRestrictedVoronoiDiagram or output 1 of the simplifier); port 2 the
  * surface the diagram was computed on.

@@ -425,6 +425,7 @@ struct LocalFrame
       return copy;
     };
     this->ScaleBack(copied(data->GetPointData(), "Radius", false), 1);
+    this->ScaleBack(copied(data->GetPointData(), "PlacedRadius", false), 1);
     this->ScaleBack(copied(data->GetPointData(), "CellArea", false), 2);
     this->ScaleBack(copied(data->GetPointData(), "CellRadius", false), 1);
     this->ToWorld(copied(data->GetPointData(), "CellCentroid", true));

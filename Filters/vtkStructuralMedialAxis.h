@@ -224,7 +224,8 @@ public:
 
   ///@{
   /// CAD mode: let the final fit change the radii of the spheres on the
-  /// sheets' boundary (fillet centre lines) too (default off; see
+  /// sheets' boundary (fillet centre lines) too (default on; the placed
+  /// radii stay as point data `PlacedRadius`; see
   /// vtkAtlasMedialAxisSimplifier::FitSheetBoundaryRadii).
   vtkSetMacro(FitSheetBoundaryRadii, bool);
   vtkGetMacro(FitSheetBoundaryRadii, bool);
@@ -295,7 +296,7 @@ protected:
   bool ClampRadiiToAtlas = false;
   bool AbsorbSpikes = false;
   bool FinalFit = true;
-  bool FitSheetBoundaryRadii = false;
+  bool FitSheetBoundaryRadii = true;
   int Strategy = Structural;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;

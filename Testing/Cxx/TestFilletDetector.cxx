@@ -15,6 +15,7 @@
 #include "vtkLogger.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkPointData.h"
+#include "vtkTrivialProducer.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <gtest/gtest.h>
@@ -41,7 +42,14 @@ Detection Detect(const TriangleMesh& part, std::size_t samples, std::size_t targ
   d.Run = test::Simplify(part, samples, target, true, true, true,
     fringeCollapses ? FringeCollapseMode::On : FringeCollapseMode::Off);
   const AtlasMedialMesh& m = d.Run.Result.Medial;
-  d.Fillets = DetectFillets(part, m.Mesh, m.AtlasOffsets, m.AtlasSites, d.Run.Rvd.PolygonSite,
+  // The rolling balls: the radii the collapses placed, where the fit
+  // changed them (as vtkFilletDetector reads PlacedRadius).
+  MedialMesh balls = m.Mesh;
+  if (!d.Run.Result.PlacedRadii.empty())
+  {
+    balls.Radii = d.Run.Result.PlacedRadii;
+  }
+  d.Fillets = DetectFillets(part, balls, m.AtlasOffsets, m.AtlasSites, d.Run.Rvd.PolygonSite,
     d.Run.Rvd.PolygonTriangle, options);
   return d;
 }
@@ -345,4 +353,60 @@ TEST(FilletDetector, VtkFilterOutputsAndErrors)
   EXPECT_NE(errors->Last.find("SiteId"), std::string::npos) << errors->Last;
   EXPECT_EQ(detector->GetOutput(0)->GetNumberOfPoints(), 0);
   EXPECT_EQ(detector->GetOutput(1)->GetNumberOfCells(), 0);
+}
+
+// With sharp features preserved the final fit changes the radii on the
+// sheets' boundary (FitSheetBoundaryRadii, the default) and keeps the
+// placed ones as PlacedRadius, which the detector reads: the fillets found
+// are the same as with those radii left as placed.
+TEST(FilletDetector, ReadsThePlacedRadiiWhereTheFitChangedThem)
+{
+  // The rounded cylinder rim of CylinderRimIsOneCircularFillet, where the
+  // fitted radii would find 112 instead of 113 centre-line edges.
+  vtkNew<vtkTrivialProducer> part;
+  part->SetOutput(test::ToPolyData(MakeRoundedCylinder(1.0, 1.5, 0.2, 0.0, 8).Mesh));
+  test::InitialMedialPipeline initial(part->GetOutputPort(), 50000);
+  vtkSmartPointer<vtkPolyData> found[2], mat[2];
+  for (int fitted : { 0, 1 })
+  {
+    vtkNew<vtkAtlasMedialAxisSimplifier> simplifier;
+    simplifier->SetInputConnection(0, initial.Voronoi->GetOutputPort());
+    simplifier->SetInputConnection(1, initial.Rvd->GetOutputPort(0));
+    simplifier->SetTargetNumberOfVertices(2000);
+    simplifier->SetPreserveSharpFeatures(true);
+    simplifier->SetFringeCollapses(vtkAtlasMedialAxisSimplifier::FringeOn);
+    simplifier->SetFitSheetBoundaryRadii(fitted);
+    vtkNew<vtkFilletDetector> detector;
+    detector->SetInputConnection(0, simplifier->GetOutputPort(0));
+    detector->SetInputConnection(1, simplifier->GetOutputPort(1));
+    detector->SetInputConnection(2, part->GetOutputPort());
+    detector->Update();
+    mat[fitted] = simplifier->GetOutput(0);
+    found[fitted] = detector->GetOutput(0);
+  }
+  EXPECT_EQ(mat[0]->GetPointData()->GetArray("PlacedRadius"), nullptr);
+  vtkDataArray* placed = mat[1]->GetPointData()->GetArray("PlacedRadius");
+  ASSERT_NE(placed, nullptr);
+  vtkDataArray* fittedRadii = mat[1]->GetPointData()->GetArray("Radius");
+  vtkDataArray* keptRadii = mat[0]->GetPointData()->GetArray("Radius");
+  ASSERT_EQ(placed->GetNumberOfTuples(), keptRadii->GetNumberOfTuples());
+  std::size_t changed = 0;
+  for (vtkIdType v = 0; v < placed->GetNumberOfTuples(); ++v)
+  {
+    changed += fittedRadii->GetTuple1(v) != placed->GetTuple1(v);
+  }
+  EXPECT_GT(changed, 0u);
+
+  EXPECT_EQ(test::FieldValue(found[1], "NumberOfFillets"), 1);
+  ASSERT_EQ(found[1]->GetNumberOfPoints(), found[0]->GetNumberOfPoints());
+  vtkDataArray* r1 = found[1]->GetPointData()->GetArray("Radius");
+  vtkDataArray* r0 = found[0]->GetPointData()->GetArray("Radius");
+  for (vtkIdType i = 0; i < found[1]->GetNumberOfPoints(); ++i)
+  {
+    Point3 a, b;
+    found[1]->GetPoint(i, a.data());
+    found[0]->GetPoint(i, b.data());
+    EXPECT_EQ(a, b) << i;
+    EXPECT_EQ(r1->GetTuple1(i), r0->GetTuple1(i)) << i;
+  }
 }

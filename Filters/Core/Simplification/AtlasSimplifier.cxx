@@ -843,12 +843,17 @@ AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
       fit.SpikeThreshold = options.SpikeThreshold;
       fit.Progress = [&](double) { return !options.Progress || options.Progress(1.0); };
       // CAD parts: feature vertices stay on their sharp edges, and the
-      // boundary of the medial sheets, where fillet centre lines run, stays
-      // (the fillet detector finds and refines those lines from it), or
-      // keeps its centres with FitSheetBoundaryRadii.
+      // boundary of the medial sheets, where fillet centre lines run, keeps
+      // its centres (the fillet detector finds and refines those lines from
+      // them) and, without FitSheetBoundaryRadii, its radii; with it, the
+      // placed radii are kept aside for the detector.
       std::vector<SphereFreedom> freedom;
       if (options.PreserveSharpFeatures)
       {
+        if (options.FitSheetBoundaryRadii)
+        {
+          result.PlacedRadii = result.Medial.Mesh.Radii;
+        }
         freedom.assign(result.Medial.Mesh.NumberOfVertices(), SphereFreedom::Free);
         for (const auto& e : SheetBoundaryEdges(result.Medial.Mesh))
         {

@@ -198,11 +198,11 @@ struct AtlasSimplifierOptions
   /// With PreserveSharpFeatures: fit the radii of the spheres on the sheets'
   /// boundary too (their centres still stay). Measured on the 13 CAD meshes
   /// of the shared set (50,000 samples -> 5,000 spheres): median two-sided
-  /// Hausdorff distance 0.36% against 0.57%. Off by default: the changed
-  /// radii move the fillet detector's choice of centre-line edges (on a
-  /// rounded cylinder rim, 112 instead of 113 edges: recall of the fillet
-  /// faces 0.949 instead of 0.970).
-  bool FitSheetBoundaryRadii = false;
+  /// Hausdorff distance 0.36% against 0.57%. The radii the collapses placed
+  /// are kept as AtlasSimplifierResult::PlacedRadii for the fillet detector:
+  /// on a fillet they are the rolling ball's, which the fitted radii, made
+  /// to close the envelope between the balls, are not.
+  bool FitSheetBoundaryRadii = true;
   /// Fraction in [0, 1]; returning false aborts (the result is then empty).
   std::function<bool(double)> Progress;
 };
@@ -236,6 +236,10 @@ struct AtlasSimplifierResult : EdgeCollapseCounts
   /// What the final fit did (all zero without it), and its time.
   EnvelopeFitResult Fit;
   double FitSeconds = 0.0;
+  /// When the fit changed the radii of the spheres on the sheets' boundary
+  /// (FitSheetBoundaryRadii): every sphere's radius as the collapses placed
+  /// it (else empty).
+  std::vector<double> PlacedRadii;
 };
 
 /// `rvd`: the restricted Voronoi diagram whose sites the Atlases refer to

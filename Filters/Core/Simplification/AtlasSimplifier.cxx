@@ -4,6 +4,7 @@
 #include "Fitting/EnvelopeFit.h"
 #include "Fitting/FitPoints.h"
 
+#include "Geometry/ClosestPoint.h"
 #include "Geometry/KdTree.h"
 #include "Geometry/Vec3.h"
 #include "Simplification/EdgeCollapse.h"
@@ -145,8 +146,14 @@ private:
     NoTarget // no point near the Atlas fits its cells' planes
   };
   SnapResult Snap(MedialEdgeCollapse& mesh, Index v, bool keepValid, CollapseScratch& scratch);
-  // Whether a snap target lies among v's Atlas sites (see Snap).
-  bool NearAtlas(Index v, const Point3& target) const;
+  // Whether a snap target lies among v's Atlas sites (see Snap), or a
+  // zero-radius sphere among the sites of the union of two Atlases.
+  bool NearAtlas(Index v, const Point3& target) const
+  {
+    return this->NearAtlas(target, this->Atlas[v], {});
+  }
+  bool NearAtlas(
+    const Point3& target, const std::vector<Index>& A, const std::vector<Index>& B) const;
   void UpdateFeature(Index v);
   // A feature vertex already on its sharp edge (snapped, radius 0).
   bool OnFeature(const MedialEdgeCollapse& mesh, Index v) const
@@ -163,6 +170,14 @@ private:
   // Per site.
   std::vector<SphereQuadric> CellQuadric;
   std::vector<double> CellArea;
+  // Squared distance from each site to the farthest vertex of its cell:
+  // every point of the cell lies within it.
+  std::vector<double> CellReach;
+  // Each cell as triangles (fans of its polygons), three corners each:
+  // those of site s at SiteCorners[SiteCornerOffsets[s] ..
+  // SiteCornerOffsets[s + 1]).
+  std::vector<Index> SiteCornerOffsets;
+  std::vector<Point3> SiteCorners;
   std::vector<Point3> Site;
   std::vector<std::uint8_t> Convex, Invaginated;
   // Per vertex.
@@ -204,6 +219,7 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
   }
   this->CellQuadric.assign(ns, SphereQuadric());
   this->CellArea.assign(ns, 0.0);
+  this->CellReach.assign(ns, 0.0);
   for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)
   {
     const Index site = rvd.PolygonSite[p];
@@ -225,9 +241,47 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
     {
       continue;
     }
+    for (Index k = 0; k < count; ++k)
+    {
+      this->CellReach[site] = std::max(this->CellReach[site],
+        Distance2(this->UnitFrame.To(rvd.Vertices[first + k]), this->Site[site]));
+    }
     const Point3 n = Normalized(twiceNormal);
     this->CellQuadric[site].AddFacet(n, Dot(n, anchor), area);
     this->CellArea[site] += area;
+  }
+  this->SiteCornerOffsets.assign(ns + 1, 0);
+  for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)
+  {
+    const Index site = rvd.PolygonSite[p], count = rvd.Offsets[p + 1] - rvd.Offsets[p];
+    if (site >= 0 && static_cast<std::size_t>(site) < ns && count >= 3)
+    {
+      this->SiteCornerOffsets[site + 1] += 3 * (count - 2);
+    }
+  }
+  for (std::size_t s = 0; s < ns; ++s)
+  {
+    this->SiteCornerOffsets[s + 1] += this->SiteCornerOffsets[s];
+  }
+  this->SiteCorners.resize(this->SiteCornerOffsets[ns]);
+  {
+    std::vector<Index> fill(this->SiteCornerOffsets.begin(), this->SiteCornerOffsets.end() - 1);
+    for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)
+    {
+      const Index site = rvd.PolygonSite[p], first = rvd.Offsets[p],
+                  count = rvd.Offsets[p + 1] - first;
+      if (site < 0 || static_cast<std::size_t>(site) >= ns || count < 3)
+      {
+        continue;
+      }
+      const Point3 anchor = this->UnitFrame.To(rvd.Vertices[first]);
+      for (Index k = 1; k + 1 < count; ++k)
+      {
+        this->SiteCorners[fill[site]++] = anchor;
+        this->SiteCorners[fill[site]++] = this->UnitFrame.To(rvd.Vertices[first + k]);
+        this->SiteCorners[fill[site]++] = this->UnitFrame.To(rvd.Vertices[first + k + 1]);
+      }
+    }
   }
   this->Convex.assign(ns, 0);
   this->Invaginated.assign(ns, 0);
@@ -322,7 +376,11 @@ Placement AtlasPolicy::Solve(const MedialEdgeCollapse& mesh, const SphereQuadric
   Placement best;
   auto consider = [&](const Sphere& x)
   {
-    if (x[3] < 0.0)
+    // A zero-radius sphere is a point of the envelope: it belongs on the
+    // surface (a sharp edge), not where the planes of the Atlas' cells meet
+    // beyond it (see NearAtlas).
+    if (x[3] < 0.0 ||
+      (x[3] == 0.0 && !this->NearAtlas({ x[0], x[1], x[2] }, this->Atlas[a], this->Atlas[b])))
     {
       return;
     }
@@ -677,18 +735,45 @@ AtlasPolicy::SnapResult AtlasPolicy::Snap(
 // The point where the planes of an Atlas's cells meet (with r = 0) is on the
 // sharp edge when the cells lie on the two faces along it. Where they lie
 // on faces that meet only beyond the part (the flanks of a gear tooth cut
-// off by its tip, a chamfer), that point is outside, well away from every
-// site of the Atlas: a snap there would put the envelope outside the
-// surface. Refused past twice the cells' size from the nearest site.
-bool AtlasPolicy::NearAtlas(Index v, const Point3& target) const
+// off by its tip, a chamfer), that point is outside: a snap there would put
+// the envelope outside the surface. A zero-radius sphere is a point of the
+// envelope, so it must lie on the surface, within the sampling's resolution
+// (the size of the Atlas' largest cell) of one of its cells. Measuring from
+// the sites instead (twice that size from the nearest one) let a gearwheel
+// keep a zero-radius sphere 1.1% of its diagonal outside it.
+bool AtlasPolicy::NearAtlas(
+  const Point3& target, const std::vector<Index>& A, const std::vector<Index>& B) const
 {
-  double nearest2 = HUGE_VAL, largestArea = 0.0;
-  for (Index s : this->Atlas[v])
+  double largestArea = 0.0;
+  for (const auto* atlas : { &A, &B })
   {
-    nearest2 = std::min(nearest2, Distance2(this->Site[s], target));
-    largestArea = std::max(largestArea, this->CellArea[s]);
+    for (Index s : *atlas)
+    {
+      largestArea = std::max(largestArea, this->CellArea[s]);
+    }
   }
-  return nearest2 <= 4.0 * largestArea;
+  const double tolerance = std::sqrt(largestArea);
+  for (const auto* atlas : { &A, &B })
+  {
+    for (Index s : *atlas)
+    {
+      const double reach = std::sqrt(this->CellReach[s]) + tolerance;
+      if (Distance2(this->Site[s], target) > reach * reach)
+      {
+        continue;
+      }
+      for (Index k = this->SiteCornerOffsets[s]; k + 2 < this->SiteCornerOffsets[s + 1]; k += 3)
+      {
+        const Point3 q = ClosestPointOnTriangle(
+          target, this->SiteCorners[k], this->SiteCorners[k + 1], this->SiteCorners[k + 2]);
+        if (Distance2(q, target) <= tolerance * tolerance)
+        {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
 }
 
 // Eq. 17: every feature vertex onto its sharp edge. First those whose snap

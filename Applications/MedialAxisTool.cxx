@@ -115,6 +115,10 @@ Options:
   --fit, --no-fit       after simplification, fit the spheres' centres and
                         radii to the surface, connectivity fixed (default:
                         on; structural strategy only)
+  --spike-repair W      weight of the fit's pull on spike edges (one ball
+                        nearly inside the other) until they are none
+                        (default 10; 0 = leave them): organic 10,000 ->
+                        1,000, largest share of spike edges 1.22% -> 0.29%
   --fit-boundary-radii, --fixed-boundary-radii
                         with --sharp, let the fit change the radii of the
                         spheres on the sheets' boundary (fillet centre lines)
@@ -173,6 +177,7 @@ struct Options
   int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;
+  double SpikeRepair = 10.0;
   int Seed = 0, Threads = 0;
 };
 
@@ -281,6 +286,18 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
         return "--feature-angle must be between 0 and 180 degrees";
       }
       o.FeatureAngle = number;
+    }
+    else if (arg == "--spike-repair")
+    {
+      if (!(problem = value(number)).empty())
+      {
+        return problem;
+      }
+      if (!(number >= 0.0 && number <= 1e6))
+      {
+        return "--spike-repair must be a weight from 0 to 1000000";
+      }
+      o.SpikeRepair = number;
     }
     else if (arg == "--feature-filtering")
     {
@@ -608,6 +625,7 @@ int main(int argc, char** argv)
   structural->SetClampRadiiToAtlas(o.ClampRadii);
   structural->SetAbsorbSpikes(o.AbsorbSpikes);
   structural->SetFinalFit(o.FinalFit);
+  structural->SetFitSpikeRepair(o.SpikeRepair);
   structural->SetFitSheetBoundaryRadii(o.FitBoundaryRadii);
   structural->SetStrategy(
     o.QMat ? vtkStructuralMedialAxis::QMat : vtkStructuralMedialAxis::Structural);
@@ -784,6 +802,7 @@ int main(int argc, char** argv)
          << ", \"clamp_radii_to_atlas\": "
          << (structural->GetClampRadiiToAtlas() ? "true" : "false")
          << ", \"final_fit\": " << (structural->GetFinalFit() ? "true" : "false")
+         << ", \"spike_repair\": " << structural->GetFitSpikeRepair()
          << ", \"fit_boundary_radii\": "
          << (structural->GetFitSheetBoundaryRadii() ? "true" : "false")
          << ", \"strategy\": " << (o.QMat ? "\"qmat\"" : "\"structural\"")

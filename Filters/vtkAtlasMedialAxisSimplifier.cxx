@@ -175,6 +175,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.EulerNeutralSpikeCollapses = this->EulerNeutralSpikeCollapses;
   options.FinalFit = this->FinalFit;
   options.FitIterations = this->FitIterations;
+  options.FitSpikeRepair = this->FitSpikeRepair;
   options.FitSheetBoundaryRadii = this->FitSheetBoundaryRadii;
   options.Progress = [this](double f)
   {
@@ -260,5 +261,6 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
   os << indent << "FinalFit: " << this->FinalFit << "\n";
   os << indent << "FitIterations: " << this->FitIterations << "\n";
+  os << indent << "FitSpikeRepair: " << this->FitSpikeRepair << "\n";
   os << indent << "FitSheetBoundaryRadii: " << this->FitSheetBoundaryRadii << "\n";
 }

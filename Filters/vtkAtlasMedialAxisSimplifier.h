@@ -268,6 +268,20 @@ public:
   ///@}
 
   ///@{
+  /// Weight of the final fit's term that pulls spike edges (stability
+  /// ratio below SpikeThreshold: one ball nearly inside the other) apart
+  /// until they are no spikes, relative to the term that keeps balls inside
+  /// the surface (default 10; 0: spike edges stay as the collapses left
+  /// them). Collapses that would cost accuracy wait, and the needles they
+  /// leave stand for bumps of the surface; moving their balls a little keeps
+  /// the bump covered without the needle. 16 organic meshes, 10,000 samples
+  /// -> 1,000 spheres: largest share of spike edges 1.22% -> 0.29%, median
+  /// two-sided Hausdorff distance 0.440% -> 0.428%.
+  vtkSetClampMacro(FitSpikeRepair, double, 0.0, 1e6);
+  vtkGetMacro(FitSpikeRepair, double);
+  ///@}
+
+  ///@{
   /// With PreserveSharpFeatures the final fit keeps the centres of the
   /// spheres on the boundary of the sheets (fillet centre lines) as the
   /// collapses placed them; on (default), it fits their radii, off it keeps
@@ -305,6 +319,7 @@ protected:
   bool EulerNeutralSpikeCollapses = false;
   bool FinalFit = true;
   int FitIterations = 4;
+  double FitSpikeRepair = 10.0;
   bool FitSheetBoundaryRadii = true;
 
 private:

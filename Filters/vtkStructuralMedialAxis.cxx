@@ -491,6 +491,7 @@ int vtkStructuralMedialAxis::RequestData(
   simplifier->SetClampRadiiToAtlas(this->ClampRadiiToAtlas);
   simplifier->SetAbsorbSpikes(this->AbsorbSpikes);
   simplifier->SetFinalFit(this->FinalFit);
+  simplifier->SetFitSpikeRepair(this->FitSpikeRepair);
   simplifier->SetFitSheetBoundaryRadii(this->FitSheetBoundaryRadii);
   simplifier->SetLambda(this->Lambda);
   simplifier->SetSpikeThreshold(this->SpikeThreshold);
@@ -662,6 +663,7 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ErrorBands: " << this->ErrorBands << "\n";
   os << indent << "AbsorbSpikes: " << this->AbsorbSpikes << "\n";
   os << indent << "FinalFit: " << this->FinalFit << "\n";
+  os << indent << "FitSpikeRepair: " << this->FitSpikeRepair << "\n";
   os << indent << "FitSheetBoundaryRadii: " << this->FitSheetBoundaryRadii << "\n";
   os << indent << "Strategy: " << (this->Strategy == QMat ? "QMat" : "Structural") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";

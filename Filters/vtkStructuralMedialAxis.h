@@ -233,6 +233,13 @@ public:
   ///@}
 
   ///@{
+  /// Weight of the final fit's pull on spike edges (default 10; 0: off; see
+  /// vtkAtlasMedialAxisSimplifier::FitSpikeRepair).
+  vtkSetClampMacro(FitSpikeRepair, double, 0.0, 1e6);
+  vtkGetMacro(FitSpikeRepair, double);
+  ///@}
+
+  ///@{
   /// Simplification strategy: Structural (default, the Atlas-guided energy
   /// of Structural MAT) or QMat (Q-MAT's slab quadric error on the same
   /// initial medial mesh, for comparison; sharp-feature snapping, Lambda and
@@ -297,6 +304,7 @@ protected:
   bool AbsorbSpikes = false;
   bool FinalFit = true;
   bool FitSheetBoundaryRadii = true;
+  double FitSpikeRepair = 10.0;
   int Strategy = Structural;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;

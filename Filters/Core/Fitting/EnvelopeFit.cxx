@@ -216,6 +216,55 @@ void MeasureOverreach(const MedialMesh& mesh, const KdTree& tree, const std::vec
   }
 }
 
+/// A spike edge: H = |r_a - r_b| - (1 - t) |c_a - c_b| > 0, how far the
+/// smaller ball falls short of sticking out of the larger one by the
+/// fraction t of their distance (t a little above the spike threshold, so
+/// that a repaired edge clears it). dH/dc_a = -(1 - t) U, dH/dc_b = (1 - t) U
+/// with U = (c_a - c_b) / |c_a - c_b|, dH/dr_a = S, dH/dr_b = -S with S the
+/// sign of r_a - r_b.
+struct SpikeDeficit
+{
+  Index A, B;
+  double H;
+  Point3 U;
+  double S;
+};
+
+void MeasureSpikes(const MedialMesh& mesh, const std::vector<std::array<Index, 2>>& edges,
+  const std::vector<Index>& unknown, double clearance, std::vector<SpikeDeficit>& out)
+{
+  out.clear();
+  if (clearance <= 0.0)
+  {
+    return;
+  }
+  for (const auto& e : edges)
+  {
+    if (unknown[e[0]] < 0 && unknown[e[1]] < 0)
+    {
+      continue;
+    }
+    const Point3 d = mesh.Centers[e[0]] - mesh.Centers[e[1]];
+    const double length = Norm(d);
+    const double dr = mesh.Radii[e[0]] - mesh.Radii[e[1]];
+    const double h = std::abs(dr) - (1.0 - clearance) * length;
+    if (h > 0.0 && length > 0.0)
+    {
+      out.push_back({ e[0], e[1], h, (1.0 / length) * d, dr >= 0.0 ? 1.0 : -1.0 });
+    }
+  }
+}
+
+double SpikeObjective(const std::vector<SpikeDeficit>& spikes, double weight)
+{
+  double sum = 0.0;
+  for (const SpikeDeficit& s : spikes)
+  {
+    sum += weight * s.H * s.H;
+  }
+  return sum;
+}
+
 double OverreachObjective(const std::vector<Overreach>& over, double weight)
 {
   double sum = 0.0;
@@ -527,6 +576,45 @@ void AssembleOverreach(const std::vector<Overreach>& over, double weight,
   }
 }
 
+/// Adds weight * H^2 per spike edge.
+void AssembleSpikes(const std::vector<SpikeDeficit>& spikes, double weight,
+  const BlockPattern& pattern, double clearance, std::vector<double>& blocks, Eigen::VectorXd& rhs)
+{
+  for (const SpikeDeficit& s : spikes)
+  {
+    const Index u[2] = { pattern.Unknown[s.A], pattern.Unknown[s.B] };
+    const double k = 1.0 - clearance;
+    const double g[2][4] = { { -k * s.U[0], -k * s.U[1], -k * s.U[2], s.S },
+      { k * s.U[0], k * s.U[1], k * s.U[2], -s.S } };
+    for (int i = 0; i < 2; ++i)
+    {
+      if (u[i] < 0)
+      {
+        continue;
+      }
+      for (int m = 0; m < 4; ++m)
+      {
+        rhs[4 * u[i] + m] -= weight * s.H * g[i][m];
+      }
+      for (int j = 0; j < 2; ++j)
+      {
+        if (u[j] < 0)
+        {
+          continue;
+        }
+        double* block = &blocks[16 * pattern.Find(u[i], u[j])];
+        for (int m = 0; m < 4; ++m)
+        {
+          for (int n = 0; n < 4; ++n)
+          {
+            block[4 * m + n] += weight * g[i][m] * g[j][n];
+          }
+        }
+      }
+    }
+  }
+}
+
 /// (A + damping (diag A + floor)) delta = rhs, approximately.
 bool Solve(const BlockPattern& pattern, const std::vector<double>& blocks,
   const Eigen::VectorXd& rhs, double damping, double floor, Eigen::VectorXd& delta)
@@ -608,7 +696,12 @@ EnvelopeFitResult FitMedialEnvelope(MedialMesh& mesh, const FitTarget& target,
     options.OverreachWeight * totalWeight / static_cast<double>(mesh.NumberOfVertices());
   std::vector<Overreach> over, trialOver;
   MeasureOverreach(mesh, tree, surface, pattern.Unknown, options.NumberOfThreads, over);
-  double objective = Objective(corr, weights) + OverreachObjective(over, overreachWeight);
+  const double clearance = options.SpikeRepairWeight > 0.0 ? options.SpikeClearance : 0.0;
+  const double spikeWeight = options.SpikeRepairWeight * overreachWeight;
+  std::vector<SpikeDeficit> spikes, trialSpikes;
+  MeasureSpikes(mesh, edges, pattern.Unknown, clearance, spikes);
+  double objective = Objective(corr, weights) + OverreachObjective(over, overreachWeight) +
+    SpikeObjective(spikes, spikeWeight);
   Statistics(corr, result.InitialRms, result.InitialMaximum);
   double damping = options.Damping;
   const double minimumDamping = 0.1 * damping;
@@ -629,6 +722,7 @@ EnvelopeFitResult FitMedialEnvelope(MedialMesh& mesh, const FitTarget& target,
     {
       Assemble(corr, weights, pattern, blocks, rhs);
       AssembleOverreach(over, overreachWeight, pattern, blocks, rhs);
+      AssembleSpikes(spikes, spikeWeight, pattern, clearance, blocks, rhs);
       double diagonalSum = 0.0;
       for (Index u = 0; u < free; ++u)
       {
@@ -667,7 +761,9 @@ EnvelopeFitResult FitMedialEnvelope(MedialMesh& mesh, const FitTarget& target,
     guard.Shorten(mesh, candidate);
     Measure(candidate, points, options.NumberOfThreads, &corr, trial);
     MeasureOverreach(candidate, tree, surface, pattern.Unknown, options.NumberOfThreads, trialOver);
-    const double value = Objective(trial, weights) + OverreachObjective(trialOver, overreachWeight);
+    MeasureSpikes(candidate, edges, pattern.Unknown, clearance, trialSpikes);
+    const double value = Objective(trial, weights) +
+      OverreachObjective(trialOver, overreachWeight) + SpikeObjective(trialSpikes, spikeWeight);
     if (value < objective)
     {
       const bool converged = value > (1.0 - options.Convergence) * objective;
@@ -675,6 +771,7 @@ EnvelopeFitResult FitMedialEnvelope(MedialMesh& mesh, const FitTarget& target,
       mesh = std::move(candidate);
       corr.swap(trial);
       over.swap(trialOver);
+      spikes.swap(trialSpikes);
       damping = std::max(damping / 3.0, minimumDamping);
       assemble = true;
       ++result.AcceptedRounds;

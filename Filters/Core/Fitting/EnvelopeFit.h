@@ -14,7 +14,8 @@
 // there), so one round is a sparse linear solve over 4 unknowns per sphere.
 // Moves that would fold or flatten a triangle or make a spike edge are
 // shortened; a round is kept only when the objective falls, otherwise the
-// damping grows and the round is tried again.
+// damping grows and the round is tried again. With SpikeRepairWeight, spike
+// edges already there are pulled apart by one more penalty term.
 #ifndef medialaxis_EnvelopeFit_h
 #define medialaxis_EnvelopeFit_h
 
@@ -49,6 +50,11 @@ struct EnvelopeFitOptions
   /// No move may turn an edge into a spike: stability ratio (|c1 - c2| -
   /// |r1 - r2|) / |c1 - c2| below this (the simplifier's threshold).
   double SpikeThreshold = 0.025;
+  /// Weight of the term that pulls spike edges apart, (|r1 - r2| - (1 -
+  /// SpikeClearance) |c1 - c2|)^2 where positive, relative to
+  /// OverreachWeight (0: spike edges are left as they are).
+  double SpikeRepairWeight = 0.0;
+  double SpikeClearance = 0.03;
   /// Threads for the distance queries (0 = all); the result does not
   /// depend on it.
   int NumberOfThreads = 0;

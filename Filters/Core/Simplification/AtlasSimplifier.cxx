@@ -926,6 +926,7 @@ AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
       EnvelopeFitOptions fit;
       fit.Iterations = options.FitIterations;
       fit.SpikeThreshold = options.SpikeThreshold;
+      fit.SpikeRepairWeight = options.FitSpikeRepair;
       fit.Progress = [&](double) { return !options.Progress || options.Progress(1.0); };
       // CAD parts: feature vertices stay on their sharp edges, and the
       // boundary of the medial sheets, where fillet centre lines run, keeps

@@ -195,6 +195,15 @@ struct AtlasSimplifierOptions
   /// sheets (fillet centre lines) stay where the collapses left them.
   bool FinalFit = true;
   int FitIterations = 4;
+  /// Weight of the fit's term that pulls spike edges (stability ratio below
+  /// SpikeThreshold) apart until their ratio clears it by a little
+  /// (EnvelopeFitOptions::SpikeRepairWeight; 0: off). The paper removes
+  /// spikes by collapsing them first, but collapses that would cost
+  /// accuracy wait, and the needles they leave stand for bumps of the
+  /// surface; moving their balls a little keeps the bump covered without
+  /// the needle. 16 organic meshes, 10,000 -> 1,000: largest share of spike
+  /// edges 1.22% -> 0.29%, median two-sided Hausdorff 0.440% -> 0.428%.
+  double FitSpikeRepair = 10.0;
   /// With PreserveSharpFeatures: fit the radii of the spheres on the sheets'
   /// boundary too (their centres still stay). Measured on the 13 CAD meshes
   /// of the shared set (50,000 samples -> 5,000 spheres): median two-sided

@@ -218,8 +218,7 @@ void MeasureOverreach(const MedialMesh& mesh, const KdTree& tree, const std::vec
 
 /// A spike edge: H = |r_a - r_b| - (1 - t) |c_a - c_b| > 0, how far the
 /// smaller ball falls short of sticking out of the larger one by the
-/// fraction t of their distance (t a little above the spike threshold, so
-/// that a repaired edge clears it). dH/dc_a = -(1 - t) U, dH/dc_b = (1 - t) U
+/// fraction t of their distance (SpikeClearance). dH/dc_a = -(1 - t) U, dH/dc_b = (1 - t) U
 /// with U = (c_a - c_b) / |c_a - c_b|, dH/dr_a = S, dH/dr_b = -S with S the
 /// sign of r_a - r_b.
 struct SpikeDeficit

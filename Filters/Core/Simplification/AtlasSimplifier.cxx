@@ -173,11 +173,11 @@ private:
   // Squared distance from each site to the farthest vertex of its cell:
   // every point of the cell lies within it.
   std::vector<double> CellReach;
-  // Each cell as triangles (fans of its polygons), three corners each:
-  // those of site s at SiteCorners[SiteCornerOffsets[s] ..
-  // SiteCornerOffsets[s + 1]).
-  std::vector<Index> SiteCornerOffsets;
-  std::vector<Point3> SiteCorners;
+  // The diagram's polygons of each cell: those of site s are
+  // SitePolygons[SitePolygonOffsets[s] .. SitePolygonOffsets[s + 1]).
+  const RestrictedVoronoiDiagram& Rvd;
+  std::vector<Index> SitePolygonOffsets;
+  std::vector<Index> SitePolygons;
   std::vector<Point3> Site;
   std::vector<std::uint8_t> Convex, Invaginated;
   // Per vertex.
@@ -190,6 +190,7 @@ private:
 AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
   const std::vector<Point3>& sites, const AtlasSimplifierOptions& options)
   : Options(options)
+  , Rvd(rvd)
 {
   // Normalisation from the sites' bounding box (the surface's extent).
   Point3 lo{ 0, 0, 0 }, hi{ 0, 0, 0 };
@@ -250,36 +251,28 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
     this->CellQuadric[site].AddFacet(n, Dot(n, anchor), area);
     this->CellArea[site] += area;
   }
-  this->SiteCornerOffsets.assign(ns + 1, 0);
+  this->SitePolygonOffsets.assign(ns + 1, 0);
   for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)
   {
-    const Index site = rvd.PolygonSite[p], count = rvd.Offsets[p + 1] - rvd.Offsets[p];
-    if (site >= 0 && static_cast<std::size_t>(site) < ns && count >= 3)
+    const Index site = rvd.PolygonSite[p];
+    if (site >= 0 && static_cast<std::size_t>(site) < ns)
     {
-      this->SiteCornerOffsets[site + 1] += 3 * (count - 2);
+      ++this->SitePolygonOffsets[site + 1];
     }
   }
   for (std::size_t s = 0; s < ns; ++s)
   {
-    this->SiteCornerOffsets[s + 1] += this->SiteCornerOffsets[s];
+    this->SitePolygonOffsets[s + 1] += this->SitePolygonOffsets[s];
   }
-  this->SiteCorners.resize(this->SiteCornerOffsets[ns]);
+  this->SitePolygons.resize(this->SitePolygonOffsets[ns]);
   {
-    std::vector<Index> fill(this->SiteCornerOffsets.begin(), this->SiteCornerOffsets.end() - 1);
+    std::vector<Index> fill(this->SitePolygonOffsets.begin(), this->SitePolygonOffsets.end() - 1);
     for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)
     {
-      const Index site = rvd.PolygonSite[p], first = rvd.Offsets[p],
-                  count = rvd.Offsets[p + 1] - first;
-      if (site < 0 || static_cast<std::size_t>(site) >= ns || count < 3)
+      const Index site = rvd.PolygonSite[p];
+      if (site >= 0 && static_cast<std::size_t>(site) < ns)
       {
-        continue;
-      }
-      const Point3 anchor = this->UnitFrame.To(rvd.Vertices[first]);
-      for (Index k = 1; k + 1 < count; ++k)
-      {
-        this->SiteCorners[fill[site]++] = anchor;
-        this->SiteCorners[fill[site]++] = this->UnitFrame.To(rvd.Vertices[first + k]);
-        this->SiteCorners[fill[site]++] = this->UnitFrame.To(rvd.Vertices[first + k + 1]);
+        this->SitePolygons[fill[site]++] = static_cast<Index>(p);
       }
     }
   }
@@ -762,13 +755,25 @@ bool AtlasPolicy::NearAtlas(
       {
         continue;
       }
-      for (Index k = this->SiteCornerOffsets[s]; k + 2 < this->SiteCornerOffsets[s + 1]; k += 3)
+      for (Index i = this->SitePolygonOffsets[s]; i < this->SitePolygonOffsets[s + 1]; ++i)
       {
-        const Point3 q = ClosestPointOnTriangle(
-          target, this->SiteCorners[k], this->SiteCorners[k + 1], this->SiteCorners[k + 2]);
-        if (Distance2(q, target) <= tolerance * tolerance)
+        // The polygon as a fan of triangles, in the unit frame.
+        const Index p = this->SitePolygons[i], first = this->Rvd.Offsets[p],
+                    count = this->Rvd.Offsets[p + 1] - first;
+        if (count < 3)
         {
-          return true;
+          continue;
+        }
+        const Point3 anchor = this->UnitFrame.To(this->Rvd.Vertices[first]);
+        for (Index k = 1; k + 1 < count; ++k)
+        {
+          const Point3 q = ClosestPointOnTriangle(target, anchor,
+            this->UnitFrame.To(this->Rvd.Vertices[first + k]),
+            this->UnitFrame.To(this->Rvd.Vertices[first + k + 1]));
+          if (Distance2(q, target) <= tolerance * tolerance)
+          {
+            return true;
+          }
         }
       }
     }

@@ -129,6 +129,19 @@ meanRadius = centreLines.GetCellData().GetArray("MeanRadius")
 check(all(abs(meanRadius.GetValue(f) - 0.1) < 0.003 for f in range(12)), "fillet radii are not 0.1")
 faces = servermanager.Fetch(fillets, idx=1)
 check(faces.GetCellData().GetArray("FilletId").GetRange() == (-1.0, 11.0), "fillet faces not labelled")
+# Its structure: eight seams from the corners meet at one junction; the
+# centre lines are fillet spheres; the Atlas agrees with the mesh.
+structure = MedialStructure(Input=OutputPort(boxMat, 0), FilletLines=OutputPort(fillets, 0),
+                            Cells=OutputPort(boxMat, 1))
+structure.UpdatePipeline()
+typed = servermanager.Fetch(structure, idx=0)
+fields = typed.GetFieldData()
+check(fields.GetArray("NumberOfSeams").GetValue(0) == 8,
+      "expected 8 seams, got %d" % fields.GetArray("NumberOfSeams").GetValue(0))
+check(fields.GetArray("NumberOfJunctionVertices").GetValue(0) == 1, "expected one junction")
+check(fields.GetArray("NumberOfFilletVertices").GetValue(0) > 100, "fillet spheres not typed")
+check(fields.GetArray("TangentComponentAgreement").GetValue(0) > 0.99, "Atlas and mesh disagree")
+check(typed.GetPointData().GetArray("MedialType") is not None, "no MedialType")
 # The one-click filter on a real CAD part.
 fandisk = os.path.join(mesh_dir, "fandisk.off")
 if os.path.exists(fandisk):

@@ -5,12 +5,14 @@
 #include "Mesh/MedialMesh.h"
 #include "Mesh/MedialMeshQuality.h"
 #include "Screenshot.h"
+#include "Structure/MedialStructure.h"
 #include "vtkAtlasMedialAxisSimplifier.h"
 #include "vtkErrorEventText.h"
 #include "vtkFilletDetector.h"
 #include "vtkMedialAxisWriter.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkMedialReconstructionError.h"
+#include "vtkMedialStructure.h"
 #include "vtkMedialSurfaceValidator.h"
 #include "vtkStructuralMedialAxis.h"
 #include "vtkSurfaceFileReader.h"
@@ -136,6 +138,12 @@ Options:
                         data Radius) and fillet_faces.vtp (the surface with
                         cell data FilletId, -1 off fillets); the report lists
                         each fillet's radius and length
+  --structure           type every sphere (sheet, seam, junction, rim, feature,
+                        fillet with --fillets, curve, isolated) and number the
+                        sheets and seams: write structure.vtp (the MAT with
+                        point data MedialType and TangentComponents, cell data
+                        SheetId) and seams.vtp (seam edges with SeamId); the
+                        report counts them
   --error               measure the two-sided Hausdorff distance between the
                         surface and the envelope (% of the bounding-box
                         diagonal) and write distance.vtp (the surface with
@@ -171,8 +179,8 @@ struct Options
   int Adaptive = -1;         // -1: from the preset
   double MaximumError = 0.0; // 0: --target
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
-       Fillets = false, SpikeCollapses = false, ClampRadii = false, AbsorbSpikes = false,
-       QMat = false, FinalFit = true, FitBoundaryRadii = true;
+       Fillets = false, Structure = false, SpikeCollapses = false, ClampRadii = false,
+       AbsorbSpikes = false, QMat = false, FinalFit = true, FitBoundaryRadii = true;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
   double FeatureAngle = 45.0;
@@ -395,6 +403,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--fillets")
     {
       o.Fillets = true;
+    }
+    else if (arg == "--structure")
+    {
+      o.Structure = true;
     }
     else if (arg == "--error")
     {
@@ -702,6 +714,34 @@ int main(int argc, char** argv)
       written.push_back(path);
     }
   }
+  double structureSeconds = 0.0;
+  vtkNew<vtkMedialStructure> structure;
+  if (o.Structure)
+  {
+    structure->SetInputData(0, mat);
+    if (o.Fillets)
+    {
+      structure->SetInputData(1, fillets->GetOutput(0));
+    }
+    structure->SetInputData(2, vtkPolyData::SafeDownCast(structural->GetOutputDataObject(1)));
+    LastError structureError;
+    Observe(structure, structureError, nullptr);
+    const auto begin = std::chrono::steady_clock::now();
+    structure->Update();
+    structureSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    if (!structureError.Message.empty())
+    {
+      std::cerr << "medial-axis: structure failed: " << structureError.Message << "\n";
+      return ComputationFailed;
+    }
+    for (int port = 0; port < 2; ++port)
+    {
+      const std::string path = (dir / (port == 0 ? "structure.vtp" : "seams.vtp")).string();
+      WriteVtp(structure->GetOutput(port), path);
+      written.push_back(path);
+    }
+  }
   if (!o.Screenshot.empty())
   {
     const std::string problem = medialaxis::WriteScreenshot(o.Screenshot, validator->GetOutput(),
@@ -770,6 +810,19 @@ int main(int argc, char** argv)
                 << cells->GetArray("Length")->GetTuple1(f) << "\n";
     }
   }
+  auto typeName = [](int t)
+  { return medialaxis::MedialVertexTypeName(static_cast<medialaxis::MedialVertexType>(t)); };
+  if (o.Structure)
+  {
+    std::cout << "  " << structure->GetNumberOfSheets() << " sheets, "
+              << structure->GetNumberOfSeams() << " seams; spheres:";
+    for (int t = 0; t < medialaxis::NumberOfMedialVertexTypes; ++t)
+    {
+      std::cout << (t ? ", " : " ") << structure->GetNumberOfVerticesOfType(t) << " "
+                << typeName(t);
+    }
+    std::cout << "\n";
+  }
   for (const std::string& path : written)
   {
     std::cout << "  wrote " << path << "\n";
@@ -816,8 +869,8 @@ int main(int argc, char** argv)
     }
     json << ", \"QueueInitialisation\": " << FieldValue(mat, "QueueInitialisationSeconds")
          << ", \"Envelope\": " << envelopeSeconds << ", \"Fillets\": " << filletSeconds
-         << ", \"Error\": " << errorSeconds << ", \"wall\": " << seconds
-         << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
+         << ", \"Structure\": " << structureSeconds << ", \"Error\": " << errorSeconds
+         << ", \"wall\": " << seconds << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
          << ",\n  \"counts\": {\"sites\": " << FieldValue(mat, "Sites")
          << ", \"initial_vertices\": " << FieldValue(mat, "InitialVertices")
          << ", \"initial_triangles\": " << FieldValue(mat, "InitialTriangles")
@@ -855,6 +908,18 @@ int main(int argc, char** argv)
              << ", \"surface_area\": " << cells->GetArray("SurfaceArea")->GetTuple1(f) << "}";
       }
       json << "]";
+    }
+    if (o.Structure)
+    {
+      json << ",\n  \"structure\": {\"sheets\": " << structure->GetNumberOfSheets()
+           << ", \"seams\": " << structure->GetNumberOfSeams() << ", \"spheres\": {";
+      for (int t = 0; t < medialaxis::NumberOfMedialVertexTypes; ++t)
+      {
+        json << (t ? ", " : "") << JsonString(typeName(t)) << ": "
+             << structure->GetNumberOfVerticesOfType(t);
+      }
+      json << "}, \"tangent_component_agreement\": "
+           << FieldValue(structure->GetOutput(0), "TangentComponentAgreement") << "}";
     }
     if (o.Error)
     {

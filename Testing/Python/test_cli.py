@@ -214,8 +214,8 @@ class CommandLineTest(unittest.TestCase):
         out = self.path("out")
         report = self.path("report.json")
         picture = self.path("box.png")
-        result = run("--preset", "cad", "--fillets", "--report", report, "--screenshot", picture,
-                     self.path("box.vtp"), out)
+        result = run("--preset", "cad", "--fillets", "--structure", "--report", report,
+                     "--screenshot", picture, self.path("box.vtp"), out)
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("12 fillets", result.stdout)
         for name in ("fillets.vtp", "fillet_faces.vtp"):
@@ -228,6 +228,17 @@ class CommandLineTest(unittest.TestCase):
             self.assertAlmostEqual(fillet["mean_radius"], 0.1, delta=0.003)
             self.assertAlmostEqual(fillet["length"], 1.8, delta=0.06)
         self.assertGreater(data["seconds"]["Fillets"], 0.0)
+        # Its structure: the cube's twelve sheets (one per edge) meet on eight
+        # seams from the corners at one junction; the centre lines are fillets.
+        for name in ("structure.vtp", "seams.vtp"):
+            self.assertTrue(os.path.getsize(os.path.join(out, name)) > 0, name)
+        structure = data["structure"]
+        self.assertEqual((structure["sheets"], structure["seams"]), (12, 8))
+        self.assertEqual(structure["spheres"]["junction"], 1)
+        self.assertGreater(structure["spheres"]["fillet"], 100)
+        self.assertEqual(sum(structure["spheres"].values()), data["counts"]["vertices"])
+        self.assertGreater(structure["tangent_component_agreement"], 0.99)
+        self.assertIn("12 sheets, 8 seams", result.stdout)
         # The picture: a PNG of the requested size, not blank.
         reader = vtk.vtkPNGReader()
         reader.SetFileName(picture)

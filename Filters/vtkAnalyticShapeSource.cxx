@@ -2,6 +2,7 @@
 #include "vtkAnalyticShapeSource.h"
 
 #include "Surface/AnalyticShapes.h"
+#include "Surface/WallShapes.h"
 #include "vtkSurfacePreparation.h"
 
 #include "vtkInformation.h"
@@ -9,6 +10,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkAnalyticShapeSource);
@@ -20,8 +23,50 @@ vtkAnalyticShapeSource::vtkAnalyticShapeSource()
 
 namespace
 {
+bool IsWallShape(int shape)
+{
+  return shape == vtkAnalyticShapeSource::T_PLATE || shape == vtkAnalyticShapeSource::L_BRACKET ||
+    shape == vtkAnalyticShapeSource::WEDGE_PLATE;
+}
+
+// The longest straight segment of a wall shape's outline and of its sides
+// along x.
+double Spacing(vtkAnalyticShapeSource* s)
+{
+  return std::max(s->GetYLength(), s->GetZLength()) / (2.0 * s->GetResolution());
+}
+
+// The section of a wall shape (throws on invalid parameters).
+medialaxis::WallSection SectionOf(vtkAnalyticShapeSource* s)
+{
+  const double spacing = Spacing(s);
+  switch (s->GetShape())
+  {
+    case vtkAnalyticShapeSource::T_PLATE:
+      return medialaxis::TPlateSection(s->GetYLength(), s->GetZLength(), s->GetThickness(),
+        s->GetFilletRadius(), spacing, s->GetResolution());
+    case vtkAnalyticShapeSource::L_BRACKET:
+      return medialaxis::LBracketSection(s->GetYLength(), s->GetZLength(), s->GetThickness(),
+        s->GetFilletRadius(), spacing, s->GetResolution());
+    default:
+      return medialaxis::WedgePlateSection(
+        s->GetYLength(), s->GetThickness(), s->GetEndThickness(), spacing);
+  }
+}
+
 medialaxis::AreaVolume Exact(vtkAnalyticShapeSource* s)
 {
+  if (IsWallShape(s->GetShape()))
+  {
+    try
+    {
+      return medialaxis::ExtrudedAreaVolume(SectionOf(s), s->GetXLength());
+    }
+    catch (const std::invalid_argument&)
+    {
+      return { std::nan(""), std::nan("") };
+    }
+  }
   switch (s->GetShape())
   {
     case vtkAnalyticShapeSource::SPHERE:
@@ -100,6 +145,11 @@ int vtkAnalyticShapeSource::RequestData(
         mesh = medialaxis::MakeBlockWithFin({ this->XLength, this->YLength, this->ZLength },
           this->Length, this->Thickness, this->Resolution);
         break;
+      case T_PLATE:
+      case L_BRACKET:
+      case WEDGE_PLATE:
+        mesh = medialaxis::ExtrudeSection(SectionOf(this), this->XLength, Spacing(this));
+        break;
       case PLATE_WITH_BOSS:
         mesh = medialaxis::MakePlateWithBoss(
           this->XLength, this->ZLength, this->Radius, this->Length, this->Resolution);
@@ -138,6 +188,7 @@ void vtkAnalyticShapeSource::PrintSelf(ostream& os, vtkIndent indent)
      << " ZLength: " << this->ZLength << "\n";
   os << indent << "FilletRadius: " << this->FilletRadius << "\n";
   os << indent << "Thickness: " << this->Thickness << "\n";
+  os << indent << "EndThickness: " << this->EndThickness << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "Center: (" << this->Center[0] << ", " << this->Center[1] << ", "
      << this->Center[2] << ")\n";

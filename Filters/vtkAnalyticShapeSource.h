@@ -36,6 +36,20 @@
  *   simplifying far removes first: see
  *   vtkAtlasMedialAxisSimplifier::ErrorBound).
  *
+ * - TPlate (thin walls, Thickness thick, extruded XLength along x): a plate
+ *   YLength wide (y from -YLength/2, z from -Thickness/2) with a rib
+ *   ZLength high on the middle of its top face; FilletRadius > 0 rounds the
+ *   two concave corners where they meet. Mid-surfaces z = 0 and y = 0.
+ * - LBracket (the same walls): a plate YLength long (y from 0) and a wall
+ *   ZLength high (z from 0) meeting at the outer corner y = z = 0;
+ *   FilletRadius > 0 rounds the inner corner with FilletRadius and the
+ *   outer one with FilletRadius + Thickness. Mid-surfaces z = y =
+ *   Thickness/2, joined by a quarter circle of radius FilletRadius +
+ *   Thickness/2 where rounded.
+ * - WedgePlate (extruded XLength along x): YLength wide, its thickness
+ *   varying linearly from Thickness at y = -YLength/2 to EndThickness at
+ *   y = YLength/2, symmetric about its mid-surface z = 0.
+ *
  * Resolution is the number of segments along a quarter circle (for the sharp
  * box, along its longest side). GetExactArea() / GetExactVolume() give the
  * area and volume of the exact shape (not of its mesh) for tests.
@@ -64,12 +78,15 @@ public:
     L_BLOCK = 6,
     DUMBBELL = 7,
     PLATE_WITH_BOSS = 8,
-    BLOCK_WITH_FIN = 9
+    BLOCK_WITH_FIN = 9,
+    T_PLATE = 10,
+    L_BRACKET = 11,
+    WEDGE_PLATE = 12
   };
 
   ///@{
   /// Which shape to generate (default SPHERE).
-  vtkSetClampMacro(Shape, int, SPHERE, BLOCK_WITH_FIN);
+  vtkSetClampMacro(Shape, int, SPHERE, WEDGE_PLATE);
   vtkGetMacro(Shape, int);
   void SetShapeToSphere() { this->SetShape(SPHERE); }
   void SetShapeToCapsule() { this->SetShape(CAPSULE); }
@@ -81,6 +98,9 @@ public:
   void SetShapeToDumbbell() { this->SetShape(DUMBBELL); }
   void SetShapeToPlateWithBoss() { this->SetShape(PLATE_WITH_BOSS); }
   void SetShapeToBlockWithFin() { this->SetShape(BLOCK_WITH_FIN); }
+  void SetShapeToTPlate() { this->SetShape(T_PLATE); }
+  void SetShapeToLBracket() { this->SetShape(L_BRACKET); }
+  void SetShapeToWedgePlate() { this->SetShape(WEDGE_PLATE); }
   ///@}
 
   ///@{
@@ -118,14 +138,22 @@ public:
   ///@}
 
   ///@{
-  /// Thickness of the block's fin (default 0.05).
+  /// Thickness of the block's fin and of the walls of the T-plate and the
+  /// L-bracket; the wedge plate's thickness at y = -YLength/2 (default 0.05).
   vtkSetClampMacro(Thickness, double, 1e-12, VTK_DOUBLE_MAX);
   vtkGetMacro(Thickness, double);
   ///@}
 
   ///@{
-  /// Fillet radius of the rounded box, at most half its smallest side
-  /// (default 0.2).
+  /// The wedge plate's thickness at y = YLength/2 (default 0.1).
+  vtkSetClampMacro(EndThickness, double, 1e-12, VTK_DOUBLE_MAX);
+  vtkGetMacro(EndThickness, double);
+  ///@}
+
+  ///@{
+  /// Fillet radius of the rounded box, at most half its smallest side; of
+  /// the concave corners where the T-plate's rib meets its plate and of the
+  /// L-bracket's inner bend (0: sharp) (default 0.2).
   vtkSetClampMacro(FilletRadius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(FilletRadius, double);
   ///@}
@@ -162,6 +190,7 @@ protected:
   double ZLength = 2.0;
   double FilletRadius = 0.2;
   double Thickness = 0.05;
+  double EndThickness = 0.1;
   int Resolution = 16;
   double Center[3] = { 0.0, 0.0, 0.0 };
 

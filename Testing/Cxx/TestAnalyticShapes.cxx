@@ -3,6 +3,7 @@
 // volume within 1% at the default resolution, and vertices on the surface.
 #include "Surface/AnalyticShapes.h"
 #include "Surface/SurfacePreparation.h"
+#include "Surface/WallShapes.h"
 #include "vtkAnalyticShapeSource.h"
 #include "vtkMedialSurfaceValidator.h"
 
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <vector>
 
 using namespace medialaxis;
 
@@ -45,6 +47,74 @@ double BoxDistance(const double* p, double h)
 {
   // Points of a box surface have max |coordinate| = h.
   return std::fabs(std::max({ std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) }) - h);
+}
+
+// Distance in the (y, z) plane from p to a section's outline, given as
+// straight segments and quarter-circle arcs (centre, radius, and the
+// quadrant's signs: the arc is the part of the circle on that side).
+struct Segment
+{
+  double Y0, Z0, Y1, Z1;
+};
+struct Arc
+{
+  double Y, Z, Radius, SignY, SignZ;
+};
+double OutlineDistance(const double* p, double halfLength, const std::vector<Segment>& segments,
+  const std::vector<Arc>& arcs)
+{
+  if (std::fabs(p[0]) > halfLength + 1e-12)
+  {
+    return 1e9;
+  }
+  double best = 1e9;
+  for (const Segment& s : segments)
+  {
+    const double dy = s.Y1 - s.Y0, dz = s.Z1 - s.Z0;
+    const double u = Clamp(((p[1] - s.Y0) * dy + (p[2] - s.Z0) * dz) / (dy * dy + dz * dz), 0, 1);
+    best = std::min(best, std::hypot(p[1] - s.Y0 - u * dy, p[2] - s.Z0 - u * dz));
+  }
+  for (const Arc& a : arcs)
+  {
+    if ((p[1] - a.Y) * a.SignY >= -1e-12 && (p[2] - a.Z) * a.SignZ >= -1e-12)
+    {
+      best = std::min(best, std::fabs(std::hypot(p[1] - a.Y, p[2] - a.Z) - a.Radius));
+    }
+  }
+  return best;
+}
+
+// The T-plate's outline (section of TPlateSection): plate 2 wide, walls
+// 0.05 thick, rib 1 high, junction fillets of radius rho.
+double TPlateDistance(const double* p, double rho)
+{
+  const double t = 0.025, w = 1.0, h = t + 1.0;
+  return OutlineDistance(p, 1.0,
+    { { -w, -t, w, -t }, { w, -t, w, t }, { w, t, t + rho, t }, { t, t + rho, t, h },
+      { t, h, -t, h }, { -t, h, -t, t + rho }, { -t - rho, t, -w, t }, { -w, t, -w, -t } },
+    rho > 0
+      ? std::vector<Arc>{ { t + rho, t + rho, rho, -1, -1 }, { -t - rho, t + rho, rho, 1, -1 } }
+      : std::vector<Arc>{});
+}
+
+// The L-bracket's (LBracketSection): plate 2 long, wall 1 high, 0.05 thick.
+double LBracketDistance(const double* p, double rho)
+{
+  const double t = 0.05, outer = rho > 0 ? rho + t : 0.0;
+  return OutlineDistance(p, 1.0,
+    { { outer, 0, 2, 0 }, { 2, 0, 2, t }, { 2, t, t + rho, t }, { t, t + rho, t, 1 },
+      { t, 1, 0, 1 }, { 0, 1, 0, outer } },
+    rho > 0 ? std::vector<Arc>{ { t + rho, t + rho, rho, -1, -1 }, { outer, outer, outer, -1, -1 } }
+            : std::vector<Arc>{});
+}
+
+void WallShape(vtkAnalyticShapeSource* s, double rho)
+{
+  s->SetXLength(2.0);
+  s->SetYLength(2.0);
+  s->SetZLength(1.0);
+  s->SetThickness(0.05);
+  s->SetFilletRadius(rho);
 }
 
 const ShapeCase Cases[] = {
@@ -157,6 +227,33 @@ const ShapeCase Cases[] = {
         std::fabs(std::fabs(p[1]) - 0.01), std::fabs(p[2] - 1.0) });
       return std::min(inBlock ? block : 1e9, inFin ? fin : 1e9);
     } },
+  { "TPlate", vtkAnalyticShapeSource::T_PLATE, [](vtkAnalyticShapeSource* s) { WallShape(s, 0.0); },
+    [](const double* p) { return TPlateDistance(p, 0.0); } },
+  { "TPlateFilleted", vtkAnalyticShapeSource::T_PLATE,
+    [](vtkAnalyticShapeSource* s) { WallShape(s, 0.1); },
+    [](const double* p) { return TPlateDistance(p, 0.1); } },
+  { "LBracket", vtkAnalyticShapeSource::L_BRACKET,
+    [](vtkAnalyticShapeSource* s) { WallShape(s, 0.0); },
+    [](const double* p) { return LBracketDistance(p, 0.0); } },
+  { "LBracketFilleted", vtkAnalyticShapeSource::L_BRACKET,
+    [](vtkAnalyticShapeSource* s) { WallShape(s, 0.1); },
+    [](const double* p) { return LBracketDistance(p, 0.1); } },
+  { "WedgePlate", vtkAnalyticShapeSource::WEDGE_PLATE,
+    [](vtkAnalyticShapeSource* s)
+    {
+      WallShape(s, 0.0);
+      s->SetEndThickness(0.15);
+    },
+    [](const double* p)
+    {
+      // Thickness 0.05 at y = -1 to 0.15 at y = 1, symmetric about z = 0.
+      const double half = 0.05 + 0.025 * p[1];
+      return OutlineDistance(p, 1.0,
+               { { -1, -0.025, 1, -0.075 }, { 1, -0.075, 1, 0.075 }, { 1, 0.075, -1, 0.025 },
+                 { -1, 0.025, -1, -0.025 } },
+               {}) +
+        0.0 * half;
+    } },
 };
 
 class AnalyticShape : public ::testing::TestWithParam<ShapeCase>
@@ -232,4 +329,28 @@ TEST(AnalyticShapes, InvalidParametersAreReported)
   EXPECT_THROW(MakePlateWithBoss(1.0, 0.01, 0.6, 0.1, 8), std::invalid_argument);
   EXPECT_THROW(MakeBlockWithFin({ 2, 1, 1 }, 0.5, 0.6, 8), std::invalid_argument); // too thick
   EXPECT_THROW(MakeBlockWithFin({ 2, 1, 1 }, 0.0, 0.02, 8), std::invalid_argument);
+  EXPECT_THROW(
+    TPlateSection(0.5, 1.0, 0.05, 0.3, 0.1, 8), std::invalid_argument); // fillets too wide
+  EXPECT_THROW(LBracketSection(1.0, 1.0, 0.05, -0.1, 0.1, 8), std::invalid_argument);
+  EXPECT_THROW(WedgePlateSection(1.0, 0.0, 0.1, 0.1), std::invalid_argument);
+}
+
+// Ear clipping: a comb-shaped outline with collinear points gives as many
+// triangles as a triangulation must (n - 2), of the polygon's area, none flat.
+TEST(AnalyticShapes, CapsTriangulateSimplePolygons)
+{
+  std::vector<std::array<double, 2>> comb{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 3, 0 }, { 3, 2 },
+    { 2.5, 2 }, { 2.5, 1 }, { 2, 1 }, { 2, 2 }, { 1, 2 }, { 1, 1 }, { 0.5, 1 }, { 0.5, 2 },
+    { 0, 2 }, { 0, 1 } };
+  const auto triangles = TriangulatePolygon(comb);
+  ASSERT_EQ(triangles.size(), comb.size() - 2);
+  double area = 0.0;
+  for (const auto& t : triangles)
+  {
+    const auto &a = comb[t[0]], &b = comb[t[1]], &c = comb[t[2]];
+    const double twice = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    EXPECT_GT(twice, 1e-9);
+    area += 0.5 * twice;
+  }
+  EXPECT_NEAR(area, 6.0 - 2 * 0.5, 1e-12); // two notches
 }

@@ -19,13 +19,16 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStructuralMedialAxis.h"
 #include "vtkTrivialProducer.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <set>
+#include <vector>
 
 namespace
 {
@@ -387,6 +390,73 @@ TEST(MedialStructure, RoundedBoxInAPipeline)
               << structure->GetNumberOfVerticesOfType(t);
   }
   std::cout << "\n";
+}
+
+// A T-plate (walls 0.1 thick, junction fillets of radius 0.1): its plate's
+// and rib's mid-sheets meet on one seam along x, at the centre of the
+// largest ball in the junction: y = 0, z = (t/2 + rho) / 4 = 0.0375, radius
+// 0.0875 (tangent to the bottom face and both fillets). The other seams run
+// round the walls' free edges, where the sharp edges fork the mid-sheets.
+TEST(MedialStructure, TPlateJunctionIsOneSeam)
+{
+  vtkNew<vtkAnalyticShapeSource> part;
+  part->SetShapeToTPlate();
+  part->SetXLength(2.0);
+  part->SetYLength(2.0);
+  part->SetZLength(1.0);
+  part->SetThickness(0.1);
+  part->SetFilletRadius(0.1);
+  vtkNew<vtkStructuralMedialAxis> mat;
+  mat->SetInputConnection(part->GetOutputPort());
+  mat->SetPresetToCAD();
+  vtkNew<vtkMedialStructure> structure;
+  structure->SetInputConnection(0, mat->GetOutputPort(0));
+  structure->SetCellsConnection(mat->GetOutputPort(1));
+  structure->Update();
+  vtkPolyData* seams = structure->GetOutput(1);
+  vtkDataArray* radius = structure->GetOutput(0)->GetPointData()->GetArray("Radius");
+  vtkDataArray* seamIds = seams->GetCellData()->GetArray("SeamId");
+  ASSERT_NE(seamIds, nullptr);
+  std::vector<std::set<vtkIdType>> points(structure->GetNumberOfSeams());
+  for (vtkIdType c = 0; c < seams->GetNumberOfCells(); ++c)
+  {
+    for (vtkIdType k = 0; k < 2; ++k)
+    {
+      points.at(static_cast<std::size_t>(seamIds->GetComponent(c, 0)))
+        .insert(seams->GetCell(c)->GetPointId(k));
+    }
+  }
+  int junctionSeams = 0;
+  for (const auto& seam : points)
+  {
+    // The junction's seam stays near the plate's mid-plane under the rib.
+    bool underRib = true;
+    double xMin = 1e9, xMax = -1e9;
+    std::vector<double> z, r;
+    for (vtkIdType v : seam)
+    {
+      double p[3];
+      seams->GetPoint(v, p);
+      underRib = underRib && std::fabs(p[1]) < 0.05 && p[2] < 0.1 && p[2] > -0.05;
+      xMin = std::min(xMin, p[0]);
+      xMax = std::max(xMax, p[0]);
+      z.push_back(p[2]);
+      r.push_back(radius->GetComponent(v, 0));
+    }
+    if (!underRib)
+    {
+      continue;
+    }
+    ++junctionSeams;
+    EXPECT_LT(xMin, -0.8);
+    EXPECT_GT(xMax, 0.8);
+    std::nth_element(z.begin(), z.begin() + z.size() / 2, z.end());
+    std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
+    EXPECT_NEAR(z[z.size() / 2], 0.0375, 0.003); // 0.1% of the diagonal
+    EXPECT_NEAR(r[r.size() / 2], 0.0875, 0.003);
+  }
+  EXPECT_EQ(junctionSeams, 1);
+  EXPECT_GE(test::FieldValue(structure->GetOutput(0), "TangentComponentAgreement"), 0.99);
 }
 
 // Inputs that cannot be classified give an error a user can act on.

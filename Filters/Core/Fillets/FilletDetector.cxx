@@ -14,7 +14,6 @@
 #include <cmath>
 #include <deque>
 #include <functional>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -166,14 +165,20 @@ EdgeVerdict JudgeEdge(Index a, Index b, const MedialMesh& medial,
   }
   // A rolling ball touches an arc of the surface; a ball on an ordinary
   // sheet boundary touches a flat face along the edge: one normal direction.
+  // A ball touching two faces that meet at a sharp edge has two directions:
+  // the surface does not follow it between them, and most of its arc is one
+  // gap. A fillet's faces cover their arc throughout.
   std::sort(around.begin(), around.end());
-  double largestGap = 2.0 * Pi - (around.back() - around.front());
+  double largestGap = 2.0 * Pi - (around.back() - around.front()), secondGap = 0.0;
   for (std::size_t i = 1; i < around.size(); ++i)
   {
-    largestGap = std::max(largestGap, around[i] - around[i - 1]);
+    const double gap = around[i] - around[i - 1];
+    secondGap = std::max(secondGap, std::min(gap, largestGap));
+    largestGap = std::max(largestGap, gap);
   }
-  return 2.0 * Pi - largestGap >= options.MinimumArcAngle ? EdgeVerdict::Accepted
-                                                          : EdgeVerdict::Rejected;
+  const double arc = 2.0 * Pi - largestGap;
+  return arc >= options.MinimumArcAngle && secondGap <= 0.5 * arc ? EdgeVerdict::Accepted
+                                                                  : EdgeVerdict::Rejected;
 }
 
 void CheckInput(const TriangleMesh& surface, const MedialMesh& medial,

@@ -36,6 +36,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -498,6 +499,38 @@ bool WriteVtp(vtkPolyData* data, const std::string& path)
   return writer->Write() == 1;
 }
 
+// Writes a stage's outputs, one file name per port, and notes them.
+void WriteOutputs(vtkPolyDataAlgorithm* stage, std::initializer_list<const char*> names,
+  const std::filesystem::path& dir, std::vector<std::string>& written)
+{
+  int port = 0;
+  for (const char* name : names)
+  {
+    const std::string path = (dir / name).string();
+    WriteVtp(stage->GetOutput(port++), path);
+    written.push_back(path);
+  }
+}
+
+// Updates a stage after the one-click filter, timing it; prints what failed
+// and returns false on an error.
+bool UpdateStage(vtkAlgorithm* stage, const char* what, ProgressBar* bar, double& seconds)
+{
+  LastError error;
+  Observe(stage, error, bar);
+  const auto begin = std::chrono::steady_clock::now();
+  stage->Update();
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  stage->RemoveObservers(vtkCommand::ErrorEvent);
+  stage->RemoveObservers(vtkCommand::ProgressEvent);
+  if (!error.Message.empty())
+  {
+    std::cerr << "medial-axis: " << what << " failed: " << error.Message << "\n";
+    return false;
+  }
+  return true;
+}
+
 double FieldValue(vtkPolyData* data, const char* name)
 {
   vtkDataArray* a = data->GetFieldData()->GetArray(name);
@@ -697,22 +730,12 @@ int main(int argc, char** argv)
     fillets->SetInputData(1, vtkPolyData::SafeDownCast(structural->GetOutputDataObject(1)));
     fillets->SetInputConnection(2, validator->GetOutputPort());
     ProgressBar filletBar{ "fillets" };
-    LastError filletError;
-    Observe(fillets, filletError, showProgress ? &filletBar : nullptr);
-    const auto begin = std::chrono::steady_clock::now();
-    fillets->Update();
-    filletSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-    if (!filletError.Message.empty())
+    if (!UpdateStage(
+          fillets, "fillet detection", showProgress ? &filletBar : nullptr, filletSeconds))
     {
-      std::cerr << "medial-axis: fillet detection failed: " << filletError.Message << "\n";
       return ComputationFailed;
     }
-    for (int port = 0; port < 2; ++port)
-    {
-      const std::string path = (dir / (port == 0 ? "fillets.vtp" : "fillet_faces.vtp")).string();
-      WriteVtp(fillets->GetOutput(port), path);
-      written.push_back(path);
-    }
+    WriteOutputs(fillets, { "fillets.vtp", "fillet_faces.vtp" }, dir, written);
   }
   double structureSeconds = 0.0;
   vtkNew<vtkMedialStructure> structure;
@@ -724,23 +747,11 @@ int main(int argc, char** argv)
       structure->SetInputData(1, fillets->GetOutput(0));
     }
     structure->SetInputData(2, vtkPolyData::SafeDownCast(structural->GetOutputDataObject(1)));
-    LastError structureError;
-    Observe(structure, structureError, nullptr);
-    const auto begin = std::chrono::steady_clock::now();
-    structure->Update();
-    structureSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-    if (!structureError.Message.empty())
+    if (!UpdateStage(structure, "structure", nullptr, structureSeconds))
     {
-      std::cerr << "medial-axis: structure failed: " << structureError.Message << "\n";
       return ComputationFailed;
     }
-    for (int port = 0; port < 2; ++port)
-    {
-      const std::string path = (dir / (port == 0 ? "structure.vtp" : "seams.vtp")).string();
-      WriteVtp(structure->GetOutput(port), path);
-      written.push_back(path);
-    }
+    WriteOutputs(structure, { "structure.vtp", "seams.vtp" }, dir, written);
   }
   if (!o.Screenshot.empty())
   {
@@ -763,14 +774,8 @@ int main(int argc, char** argv)
     error->SetInputData(1, mat);
     error->SetNumberOfThreads(o.Threads);
     ProgressBar errorBar{ "error" };
-    LastError errorError;
-    Observe(error, errorError, showProgress ? &errorBar : nullptr);
-    const auto begin = std::chrono::steady_clock::now();
-    error->Update();
-    errorSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-    if (!errorError.Message.empty())
+    if (!UpdateStage(error, "error measurement", showProgress ? &errorBar : nullptr, errorSeconds))
     {
-      std::cerr << "medial-axis: error measurement failed: " << errorError.Message << "\n";
       return ComputationFailed;
     }
     hausdorff = error->GetHausdorff();

@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -457,6 +458,73 @@ TEST(MedialStructure, TPlateJunctionIsOneSeam)
   }
   EXPECT_EQ(junctionSeams, 1);
   EXPECT_GE(test::FieldValue(structure->GetOutput(0), "TangentComponentAgreement"), 0.99);
+}
+
+// A sharp box's spheres of radius 0 are its feature spheres: typed feature,
+// on the box's twelve edges, and every edge has them along its length.
+TEST(MedialStructure, BoxFeatureSpheresAreOnItsEdges)
+{
+  vtkNew<vtkAnalyticShapeSource> box;
+  box->SetShapeToBox();
+  vtkNew<vtkStructuralMedialAxis> mat;
+  mat->SetInputConnection(box->GetOutputPort());
+  mat->SetPresetToCAD();
+  mat->SetNumberOfSamples(20000);
+  mat->SetTargetNumberOfVertices(2000);
+  vtkNew<vtkMedialStructure> structure;
+  structure->SetInputConnection(0, mat->GetOutputPort(0));
+  structure->Update();
+  vtkPolyData* out = structure->GetOutput(0);
+  auto* type = vtkIntArray::SafeDownCast(out->GetPointData()->GetArray("MedialType"));
+  ASSERT_NE(type, nullptr);
+  // Per edge (axis a, signs of the other two), how far along it the feature
+  // spheres reach.
+  std::map<std::array<int, 3>, std::array<double, 2>> reach;
+  int features = 0;
+  for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
+  {
+    if (type->GetValue(v) != static_cast<int>(Type::Feature))
+    {
+      continue;
+    }
+    ++features;
+    double p[3];
+    out->GetPoint(v, p);
+    // On an edge: two coordinates at +-1.
+    int along = -1, onFaces = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      if (std::fabs(std::fabs(p[a]) - 1.0) < 0.01)
+      {
+        ++onFaces;
+      }
+      else
+      {
+        along = a;
+      }
+    }
+    EXPECT_GE(onFaces, 2) << "feature sphere " << v << " at " << p[0] << " " << p[1] << " " << p[2]
+                          << " is on no edge";
+    // (a corner sphere is on its three edges)
+    for (int a = 0; a < 3; ++a)
+    {
+      if (onFaces == 3 || a == along)
+      {
+        const std::array<int, 3> key{ a, p[(a + 1) % 3] > 0 ? 1 : -1, p[(a + 2) % 3] > 0 ? 1 : -1 };
+        auto [it, added] = reach.insert({ key, { p[a], p[a] } });
+        it->second = { std::min(it->second[0], p[a]), std::max(it->second[1], p[a]) };
+      }
+    }
+  }
+  EXPECT_GT(features, 100);
+  EXPECT_EQ(reach.size(), 12u);
+  // (to within a tenth of the edge of its corners: at 2,000 spheres the
+  // feature spheres along an edge are about that far apart)
+  for (const auto& [edge, range] : reach)
+  {
+    EXPECT_LT(range[0], -0.8);
+    EXPECT_GT(range[1], 0.8);
+  }
 }
 
 // Inputs that cannot be classified give an error a user can act on.

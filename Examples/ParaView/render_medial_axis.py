@@ -1,10 +1,11 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """pvbatch/pvpython: compute the Structural MAT of a surface with the plugin and
-render it (spheres' centres coloured by radius) inside the semi-transparent
+render it (coloured by radius, or with --structure by sphere type: sheet,
+seam, junction, rim, feature, fillet, curve) inside the semi-transparent
 surface, to a PNG.
 
     xvfb-run -a -s "-screen 0 1024x768x24" pvbatch render_medial_axis.py \\
-        PLUGIN OUTPUT.png [SURFACE] [--cad] [--samples N] [--target N]
+        PLUGIN OUTPUT.png [SURFACE] [--cad] [--structure] [--samples N] [--target N]
 
 Without SURFACE it uses a generated box with rounded edges.
 """
@@ -17,6 +18,7 @@ parser.add_argument("plugin")
 parser.add_argument("output")
 parser.add_argument("surface", nargs="?")
 parser.add_argument("--cad", action="store_true", help="the paper's CAD settings")
+parser.add_argument("--structure", action="store_true", help="colour the spheres by type")
 parser.add_argument("--samples", type=int)
 parser.add_argument("--target", type=int)
 parser.add_argument("--size", type=int, nargs=2, default=[1200, 900])
@@ -30,7 +32,8 @@ else:
 mat = StructuralMedialAxis(Input=surface,
                            NumberOfSamples=args.samples or (50000 if args.cad else 10000),
                            TargetNumberOfVertices=args.target or (5000 if args.cad else 1000),
-                           PreserveSharpFeatures=1 if args.cad else 0)
+                           PreserveSharpFeatures=1 if args.cad else 0,
+                           AdaptiveSampling=0 if args.cad else 1)
 
 view = CreateView("RenderView")
 view.ViewSize = args.size
@@ -42,12 +45,24 @@ shell.Representation = "Surface"
 shell.DiffuseColor = [0.75, 0.78, 0.85]
 shell.Opacity = 0.25
 shell.ColorArrayName = ["POINTS", ""]
-axis = Show(OutputPort(mat, 0), view)
+shown = OutputPort(mat, 0)
+if args.structure:
+    # The restricted Voronoi cells (port 1) give each sphere's tangent
+    # components, MATFP's cross-check of the types.
+    shown = MedialStructure(Input=OutputPort(mat, 0), Cells=OutputPort(mat, 1))
+axis = Show(shown, view)
 axis.Representation = "Surface With Edges"
 axis.EdgeColor = [0.15, 0.15, 0.15]
-ColorBy(axis, ("POINTS", "Radius"))
-radius = GetColorTransferFunction("Radius")
-radius.ApplyPreset("Viridis (matplotlib)", True)
+array = "MedialType" if args.structure else "Radius"
+ColorBy(axis, ("POINTS", array))
+colours = GetColorTransferFunction(array)
+if args.structure:
+    colours.InterpretValuesAsCategories = 1
+    colours.Annotations = ["0", "sheet", "1", "seam", "2", "junction", "3", "rim", "4", "feature",
+                           "5", "fillet", "6", "curve", "7", "isolated"]
+    colours.ApplyPreset("Brewer Qualitative Set1", True)
+else:
+    colours.ApplyPreset("Viridis (matplotlib)", True)
 axis.SetScalarBarVisibility(view, True)
 view.ResetCamera()
 camera = view.GetActiveCamera()
@@ -56,6 +71,11 @@ camera.Azimuth(35)
 view.ResetCamera()
 Render(view)
 SaveScreenshot(args.output, view, ImageResolution=args.size)
-result = servermanager.Fetch(OutputPort(mat, 0))
+result = servermanager.Fetch(shown)
 print("rendered %d spheres, %d slabs to %s" % (
     result.GetNumberOfPoints(), result.GetNumberOfPolys(), args.output))
+if args.structure:
+    fields = result.GetFieldData()
+    print("structure: %d sheets, %d seams, %d junction spheres" % (
+        fields.GetArray("NumberOfSheets").GetValue(0), fields.GetArray("NumberOfSeams").GetValue(0),
+        fields.GetArray("NumberOfJunctionVertices").GetValue(0)))

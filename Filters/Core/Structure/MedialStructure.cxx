@@ -231,23 +231,27 @@ MedialStructure ClassifyMedialStructure(
   // on another sheet by edges of three or more faces, join the largest
   // sheet they touch, and their faces no longer make those edges seams.
   std::vector<double> area(nf, 0.0), rootArea(nf, 0.0);
+  std::vector<Index> firstSheet(nf);
   double totalArea = 0.0;
   for (std::size_t f = 0; f < nf; ++f)
   {
     const auto& t = mesh.Faces[f];
     const Point3& p = mesh.Centers[t[0]];
     area[f] = 0.5 * Norm(Cross(mesh.Centers[t[1]] - p, mesh.Centers[t[2]] - p));
-    rootArea[joined.Find(static_cast<Index>(f))] += area[f];
+    firstSheet[f] = joined.Find(static_cast<Index>(f));
+    rootArea[firstSheet[f]] += area[f];
     totalArea += area[f];
   }
   const double flapArea = options.MinimumSheetFraction * totalArea;
   std::vector<std::uint8_t> flapFace(nf, 0);
-  std::vector<Index> firstSheet(nf);
   for (std::size_t f = 0; f < nf; ++f)
   {
-    firstSheet[f] = joined.Find(static_cast<Index>(f));
     flapFace[f] = rootArea[firstSheet[f]] < flapArea ? 1 : 0;
   }
+  // Whether sheet (root) a is preferred to b as a host: larger, then lower
+  // id; any sheet to none (b < 0).
+  auto larger = [&](Index a, Index b)
+  { return b < 0 || rootArea[a] > rootArea[b] || (rootArea[a] == rootArea[b] && a < b); };
   // Without the flaps, an edge may have two faces left: they join.
   for (std::size_t r = 0; r + 1 < runStart.size(); ++r)
   {
@@ -280,9 +284,7 @@ MedialStructure ClassifyMedialStructure(
       {
         const Index other = firstSheet[faceEdges[j].Face];
         Index& host = hostOf[flap];
-        if (other != flap &&
-          (host < 0 || rootArea[other] > rootArea[host] ||
-            (rootArea[other] == rootArea[host] && other < host)))
+        if (other != flap && larger(other, host))
         {
           host = other;
         }
@@ -297,9 +299,7 @@ MedialStructure ClassifyMedialStructure(
     for (Index v : mesh.Faces[f])
     {
       Index& at = sheetAtVertex[v];
-      if (!flapFace[f] &&
-        (at < 0 || rootArea[sheet] > rootArea[at] ||
-          (rootArea[sheet] == rootArea[at] && sheet < at)))
+      if (!flapFace[f] && larger(sheet, at))
       {
         at = sheet;
       }
@@ -316,9 +316,7 @@ MedialStructure ClassifyMedialStructure(
     {
       const Index other = sheetAtVertex[v];
       Index& host = hostOf[flap];
-      if (other >= 0 &&
-        (host < 0 || flapFace[host] || rootArea[other] > rootArea[host] ||
-          (rootArea[other] == rootArea[host] && other < host)))
+      if (other >= 0 && (host < 0 || flapFace[host] || larger(other, host)))
       {
         host = other;
       }

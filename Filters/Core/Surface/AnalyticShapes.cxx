@@ -64,13 +64,14 @@ std::vector<double> AxisSamples(double half, double rho, int bandSegments, doubl
   return samples;
 }
 
+}
+
 void RequirePositive(double value, const char* what)
 {
   if (!(value > 0.0) || !std::isfinite(value))
   {
     throw std::invalid_argument(std::string(what) + " must be positive and finite");
   }
-}
 }
 
 TriangleMesh MakeRoundedBox(const Point3& sides, double filletRadius, int resolution)

@@ -92,6 +92,10 @@ LabelledTriangleMesh MakeFilletedPrism(const Point3& sides,
 LabelledTriangleMesh MakeRoundedCylinder(
   double radius, double height, double topFilletRadius, double bottomFilletRadius, int resolution);
 
+/// Throws std::invalid_argument ("<what> must be positive and finite")
+/// unless `value` is: the check of every shape parameter.
+void RequirePositive(double value, const char* what);
+
 /// Exact area and volume of the analytic shapes above (not of their meshes).
 struct AreaVolume
 {

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <string>
 
 namespace medialaxis
 {
@@ -18,14 +17,6 @@ void Require(bool condition, const char* message)
   if (!condition)
   {
     throw std::invalid_argument(message);
-  }
-}
-
-void RequirePositive(double value, const char* what)
-{
-  if (!(value > 0.0) || !std::isfinite(value))
-  {
-    throw std::invalid_argument(std::string(what) + " must be positive and finite");
   }
 }
 

@@ -36,18 +36,43 @@ public:
   /// Distance from p to the nearest triangle (infinity for an empty mesh).
   double Distance(const Point3& p) const
   {
-    double best2 = std::numeric_limits<double>::infinity();
+    return std::sqrt(this->Closest(p, [](Index) { return true; }).Distance2);
+  }
+
+  struct ClosestHit
+  {
+    Point3 Point{ 0, 0, 0 };
+    double Distance2 = std::numeric_limits<double>::infinity();
+    Index Triangle = -1; // -1: no triangle accepted within the limit
+  };
+
+  /// The closest point to p on the triangles t with accept(t), nearer than
+  /// `limit`.
+  template <typename Accept>
+  ClosestHit Closest(
+    const Point3& p, Accept&& accept, double limit = std::numeric_limits<double>::infinity()) const
+  {
+    ClosestHit best;
+    best.Distance2 = limit * limit;
     this->Tree.Search([&](const BoxTree::Node& n) { return SquaredDistanceToBox(p, n.Bounds); },
       [&](std::uint32_t t)
       {
+        if (!accept(static_cast<Index>(t)))
+        {
+          return false;
+        }
         const Triangle& tri = this->Mesh.Triangles[t];
         const Point3 q = ClosestPointOnTriangle(
           p, this->Mesh.Points[tri[0]], this->Mesh.Points[tri[1]], this->Mesh.Points[tri[2]]);
-        best2 = std::min(best2, Distance2(p, q));
+        const double d2 = Distance2(p, q);
+        if (d2 < best.Distance2)
+        {
+          best = { q, d2, static_cast<Index>(t) };
+        }
         return false;
       },
-      best2);
-    return std::sqrt(best2);
+      best.Distance2);
+    return best;
   }
 
   struct RayHit
@@ -62,6 +87,15 @@ public:
   RayHit FirstHit(const Point3& origin, const Point3& direction, double minimumDistance,
     double maximumDistance, Index skipTriangle = -1) const
   {
+    return this->FirstHitIf(origin, direction, minimumDistance, maximumDistance,
+      [skipTriangle](Index t) { return t != skipTriangle; });
+  }
+
+  /// The same, among the triangles t with accept(t).
+  template <typename Accept>
+  RayHit FirstHitIf(const Point3& origin, const Point3& direction, double minimumDistance,
+    double maximumDistance, Accept&& accept) const
+  {
     Point3 inverse;
     for (int k = 0; k < 3; ++k)
     {
@@ -73,7 +107,7 @@ public:
       { return RayEntry(origin, inverse, n.Bounds, best); },
       [&](std::uint32_t t)
       {
-        if (static_cast<Index>(t) == skipTriangle)
+        if (!accept(static_cast<Index>(t)))
         {
           return false;
         }

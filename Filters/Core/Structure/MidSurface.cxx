@@ -1,0 +1,943 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Structure/MidSurface.h"
+
+#include "Geometry/Vec3.h"
+#include "Mesh/TriangleAdjacency.h"
+#include "Mesh/TriangleLocator.h"
+#include "Support/DisjointSets.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <queue>
+
+namespace medialaxis
+{
+namespace
+{
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+// Planes whose normals are this close continue one another (one wall).
+const double SamePlaneCosine = std::cos(15.0 * M_PI / 180.0);
+// A chord is centred only where it meets both sides at angles this close.
+const double ChordAngleTolerance = 1.0 * M_PI / 180.0;
+// A chord is centred only between sides this close to parallel (plus the
+// tessellation's angle where both sides are curved): between
+// sides that converge more (a fillet's start), its middle follows their
+// bisector, away from the wall's plane. Drafted walls (up to a degree a
+// side) still pass.
+const double ChordSidesTolerance = 2.0 * M_PI / 180.0;
+// Neighbouring triangles meeting at less than this tessellate one smooth side.
+const double SmoothSideAngle = 20.0 * M_PI / 180.0;
+// A side faces a sheet whose normal is within this angle of its own.
+const double SideFacingCosine = std::cos(45.0 * M_PI / 180.0);
+// Centring moves a vertex across its sheet, and along it by at most this
+// fraction of the thickness (the noise of the discrete medial axis).
+const double MaximumSlide = 0.1;
+// Chords tilted further from the sides' normals are not trusted.
+const double MaximumChordTilt = 30.0 * M_PI / 180.0;
+// A lateral face stands at least this steeply on the wall's mid-surface.
+const double LateralFaceSine = std::sin(60.0 * M_PI / 180.0);
+// Walls smaller than this share of the mid-surface are fragments.
+const double MinimumWallFraction = 0.001;
+// A wall bends by less than this from one triangle to the next.
+const double SameWallCosine = std::cos(30.0 * M_PI / 180.0);
+
+Point3 AreaNormal(const std::vector<Point3>& points, const std::array<Index, 3>& t)
+{
+  return Cross(points[t[1]] - points[t[0]], points[t[2]] - points[t[0]]);
+}
+
+// Slivers (height under 5% of their longest edge) tilt with the last digits
+// of their points: their normals say nothing.
+bool IsSliver(const std::vector<Point3>& points, const std::array<Index, 3>& t)
+{
+  double longest2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    longest2 = std::max(longest2, Distance2(points[t[k]], points[t[(k + 1) % 3]]));
+  }
+  return !(Norm(AreaNormal(points, t)) > 0.05 * longest2);
+}
+
+// Any unit vector perpendicular to the unit vector n.
+Point3 Perpendicular(const Point3& n)
+{
+  const Point3 axis = std::fabs(n[0]) < 0.6 ? Point3{ 1, 0, 0 } : Point3{ 0, 1, 0 };
+  return Normalized(Cross(n, axis));
+}
+
+// The first surface triangle along the unit `direction`. A ray through an
+// edge or a vertex of the surface can slip between the triangles there; it
+// is then tilted by a negligible angle and cast again.
+TriangleLocator::RayHit CastRay(const TriangleLocator& locator, const Point3& origin,
+  const Point3& direction, const Point3& tilt, double maximum)
+{
+  TriangleLocator::RayHit hit;
+  for (double angle : { 0.0, 1e-6, -1e-6 })
+  {
+    hit = locator.FirstHit(origin, Normalized(direction + angle * tilt), 0.0, maximum);
+    if (hit.Triangle >= 0)
+    {
+      break;
+    }
+  }
+  return hit;
+}
+
+// Thickness probes on the closed surface.
+struct WallProbe
+{
+  const TriangleLocator& Locator;
+  const std::vector<Point3>& Normals; // per surface triangle, unit
+  // Per surface triangle: the largest angle to a neighbour on the same
+  // smooth side (0 on a plane).
+  const std::vector<double>& FacetAngle;
+
+  // Two tessellated curved sides (concentric cylinders) meet a chord at
+  // angles that differ by up to a triangle's turn; a plane facing a curved
+  // side (a fillet's start) gets no such allowance.
+  double SidesTolerance(Index a, Index b) const
+  {
+    const double fa = this->FacetAngle[a], fb = this->FacetAngle[b];
+    return ChordSidesTolerance + (fa > 0.0 && fb > 0.0 ? std::max(fa, fb) : 0.0);
+  }
+
+  // The middle between the two sides near x, as MidSurfer's medial lines
+  // find it: from the nearest surface point straight across the wall to
+  // the other side, which must face it (parallel within
+  // ChordSidesTolerance). Exact between parallel planes and between
+  // concentric cylinders; false where the other side turns away (a
+  // fillet, a rib, a corner).
+  bool Centre(
+    const Point3& x, const Point3& normal, double reach, Point3& middle, double& thickness) const
+  {
+    // The nearest point on a side facing the sheet: the lateral faces at its
+    // ends and the sides of other walls at a junction do not count.
+    const auto near = this->Locator.Closest(
+      x, [&](Index t) { return std::fabs(Dot(this->Normals[t], normal)) >= SideFacingCosine; },
+      reach);
+    if (near.Triangle < 0)
+    {
+      return false;
+    }
+    // Across from the nearest point towards x: the side's normal inside a
+    // triangle, and between its normals on an edge or a corner of a
+    // tessellated curved side.
+    const Point3 inward = Normalized(x - near.Point);
+    if (!(Norm(x - near.Point) > 1e-9 * reach))
+    {
+      return false;
+    }
+    const auto across =
+      this->Locator.FirstHit(near.Point, inward, 1e-9 * reach, reach, near.Triangle);
+    if (across.Triangle < 0 ||
+      std::fabs(Dot(this->Normals[across.Triangle], inward)) <
+        std::cos(this->SidesTolerance(near.Triangle, across.Triangle)))
+    {
+      return false;
+    }
+    // The middle must lie across the sheet from x, not along it: a point
+    // near a junction is nearest to another wall's side.
+    const Point3 m = near.Point + 0.5 * across.Distance * inward;
+    const Point3 move = m - x;
+    if (Norm(move - Dot(move, normal) * normal) > MaximumSlide * across.Distance)
+    {
+      return false;
+    }
+    middle = m;
+    thickness = across.Distance;
+    return true;
+  }
+
+  struct ChordResult
+  {
+    double Thickness = -1.0; // -1: the chord does not meet two parallel sides alike
+    double Offset = 0.0;     // from x to the chord's middle, along n
+  };
+
+  // The chord through x along the unit normal n of the mid-surface: the
+  // wall's thickness and its middle where the chord meets two parallel
+  // sides at the same angle.
+  ChordResult Chord(const Point3& x, const Point3& n, double reach) const
+  {
+    const Point3 tilt = Perpendicular(n);
+    const auto up = CastRay(this->Locator, x, n, tilt, reach);
+    const auto down = CastRay(this->Locator, x, -1.0 * n, tilt, reach);
+    if (up.Triangle < 0 || down.Triangle < 0)
+    {
+      return {};
+    }
+    const Point3& upNormal = this->Normals[up.Triangle];
+    const Point3& downNormal = this->Normals[down.Triangle];
+    const double upAngle = std::acos(std::min(1.0, std::fabs(Dot(upNormal, n))));
+    const double downAngle = std::acos(std::min(1.0, std::fabs(Dot(downNormal, n))));
+    if (std::fabs(upAngle - downAngle) > ChordAngleTolerance || upAngle > MaximumChordTilt ||
+      std::fabs(Dot(upNormal, downNormal)) <
+        std::cos(this->SidesTolerance(up.Triangle, down.Triangle)))
+    {
+      return {};
+    }
+    return { (up.Distance + down.Distance) * std::cos(0.5 * (upAngle + downAngle)),
+      0.5 * (up.Distance - down.Distance) };
+  }
+};
+
+// Planes (a point and a unit normal) merged where their normals agree.
+struct PlaneSet
+{
+  std::vector<Point3> Points, Normals;
+  std::vector<int> Count;
+
+  void Add(const Point3& p, const Point3& n)
+  {
+    for (std::size_t k = 0; k < this->Normals.size(); ++k)
+    {
+      const Point3 mean = Normalized(this->Normals[k]);
+      const double c = Dot(mean, n);
+      if (std::fabs(c) >= SamePlaneCosine)
+      {
+        this->Normals[k] = this->Normals[k] + (c < 0.0 ? -1.0 : 1.0) * n;
+        this->Points[k] = this->Points[k] + p;
+        ++this->Count[k];
+        return;
+      }
+    }
+    this->Points.push_back(p);
+    this->Normals.push_back(n);
+    this->Count.push_back(1);
+  }
+
+  // The point nearest `x` on every plane (where they meet), least squares
+  // with a tiny pull towards x for the directions the planes leave free.
+  Point3 Meet(const Point3& x) const
+  {
+    Eigen::Matrix3d a = 1e-6 * Eigen::Matrix3d::Identity();
+    Eigen::Vector3d b = 1e-6 * Eigen::Vector3d(x[0], x[1], x[2]);
+    for (std::size_t k = 0; k < this->Normals.size(); ++k)
+    {
+      const Point3 n = Normalized(this->Normals[k]);
+      const Point3 p = (1.0 / this->Count[k]) * this->Points[k];
+      const Eigen::Vector3d ne(n[0], n[1], n[2]);
+      a += ne * ne.transpose();
+      b += ne * Dot(n, p);
+    }
+    const Eigen::Vector3d y = a.ldlt().solve(b);
+    return { y[0], y[1], y[2] };
+  }
+
+  // `d` with its components along the planes' normals removed.
+  Point3 AlongAll(Point3 d) const
+  {
+    std::vector<Point3> basis;
+    for (const Point3& raw : this->Normals)
+    {
+      Point3 n = Normalized(raw);
+      for (const Point3& e : basis)
+      {
+        n = n - Dot(n, e) * e;
+      }
+      if (Norm(n) > 1e-6)
+      {
+        basis.push_back(Normalized(n));
+        d = d - Dot(d, basis.back()) * basis.back();
+      }
+    }
+    return d;
+  }
+};
+
+// Per vertex, the distinct sheets of its kept faces; a state per (vertex,
+// sheet) for the search along each sheet.
+struct SheetStates
+{
+  std::vector<Index> Offsets; // per vertex
+  std::vector<Index> Sheet;   // per state
+  std::vector<Index> Vertex;  // per state
+
+  Index Find(Index v, Index sheet) const
+  {
+    for (Index s = this->Offsets[v]; s < this->Offsets[v + 1]; ++s)
+    {
+      if (this->Sheet[s] == sheet)
+      {
+        return s;
+      }
+    }
+    return -1;
+  }
+};
+
+SheetStates MakeSheetStates(
+  const MedialMesh& mesh, const std::vector<Index>& kept, const std::vector<Index>& faceSheet)
+{
+  std::vector<std::vector<Index>> sheets(mesh.NumberOfVertices());
+  for (Index f : kept)
+  {
+    for (Index v : mesh.Faces[f])
+    {
+      sheets[v].push_back(faceSheet[f]);
+    }
+  }
+  SheetStates states;
+  states.Offsets.push_back(0);
+  for (std::size_t v = 0; v < sheets.size(); ++v)
+  {
+    std::sort(sheets[v].begin(), sheets[v].end());
+    sheets[v].erase(std::unique(sheets[v].begin(), sheets[v].end()), sheets[v].end());
+    for (Index s : sheets[v])
+    {
+      states.Sheet.push_back(s);
+      states.Vertex.push_back(static_cast<Index>(v));
+    }
+    states.Offsets.push_back(static_cast<Index>(states.Sheet.size()));
+  }
+  return states;
+}
+
+// For every state, the nearest wall vertex along the edges of its sheet
+// (Dijkstra from all wall vertices at once); -1 where none is reachable.
+std::vector<Index> NearestWallVertex(const MedialMesh& mesh, const std::vector<Index>& kept,
+  const std::vector<Index>& faceSheet, const SheetStates& states,
+  const std::vector<std::uint8_t>& isWall)
+{
+  const std::size_t ns = states.Sheet.size();
+  std::vector<std::vector<std::pair<Index, double>>> next(ns);
+  for (Index f : kept)
+  {
+    const auto& t = mesh.Faces[f];
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = states.Find(t[k], faceSheet[f]),
+                  b = states.Find(t[(k + 1) % 3], faceSheet[f]);
+      const double w = std::sqrt(Distance2(mesh.Centers[t[k]], mesh.Centers[t[(k + 1) % 3]]));
+      next[a].emplace_back(b, w);
+      next[b].emplace_back(a, w);
+    }
+  }
+  std::vector<double> distance(ns, Infinity);
+  std::vector<Index> source(ns, -1);
+  using Entry = std::pair<double, Index>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (std::size_t s = 0; s < ns; ++s)
+  {
+    if (isWall[states.Vertex[s]])
+    {
+      distance[s] = 0.0;
+      source[s] = states.Vertex[s];
+      queue.emplace(0.0, static_cast<Index>(s));
+    }
+  }
+  while (!queue.empty())
+  {
+    const auto [d, s] = queue.top();
+    queue.pop();
+    if (d > distance[s])
+    {
+      continue;
+    }
+    for (const auto& [t, w] : next[s])
+    {
+      if (d + w < distance[t] || (d + w == distance[t] && source[s] < source[t]))
+      {
+        distance[t] = d + w;
+        source[t] = source[s];
+        queue.emplace(d + w, t);
+      }
+    }
+  }
+  return source;
+}
+
+// Flips faces so that faces across edges of exactly two agree (one
+// orientation per orientable piece).
+void OrientConsistently(std::vector<std::array<Index, 3>>& faces)
+{
+  std::map<std::array<Index, 2>, std::vector<Index>> edgeFaces;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
+      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(static_cast<Index>(f));
+    }
+  }
+  auto uses = [&](Index f, Index a, Index b)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (faces[f][k] == a && faces[f][(k + 1) % 3] == b)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  std::vector<std::uint8_t> done(faces.size(), 0);
+  for (std::size_t seed = 0; seed < faces.size(); ++seed)
+  {
+    if (done[seed])
+    {
+      continue;
+    }
+    done[seed] = 1;
+    std::vector<Index> stack{ static_cast<Index>(seed) };
+    while (!stack.empty())
+    {
+      const Index f = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k)
+      {
+        const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
+        const auto& around = edgeFaces[{ std::min(a, b), std::max(a, b) }];
+        if (around.size() != 2)
+        {
+          continue;
+        }
+        const Index g = around[0] == f ? around[1] : around[0];
+        if (done[g])
+        {
+          continue;
+        }
+        if (uses(g, a, b))
+        {
+          std::swap(faces[g][1], faces[g][2]);
+        }
+        done[g] = 1;
+        stack.push_back(g);
+      }
+    }
+  }
+}
+}
+
+MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& structure,
+  const TriangleMesh& surface, const MidSurfaceOptions& options)
+{
+  MidSurface out;
+  const WallSheets walls = FindWallSheets(mesh, structure, options.Walls);
+  out.WallThickness = walls.WallThickness;
+  out.WallSheets = walls.NumberOfWallSheets;
+  const std::size_t nv = mesh.NumberOfVertices();
+  std::vector<Index> kept;
+  for (std::size_t f = 0; f < mesh.Faces.size() && f < structure.FaceSheet.size(); ++f)
+  {
+    const Index s = structure.FaceSheet[f];
+    if (s >= 0 && walls.SheetIsWall[s])
+    {
+      kept.push_back(static_cast<Index>(f));
+    }
+  }
+  if (kept.empty() || surface.Triangles.empty())
+  {
+    return out;
+  }
+  const TriangleLocator locator(surface);
+  std::vector<Point3> surfaceNormal(surface.Triangles.size());
+  for (std::size_t t = 0; t < surface.Triangles.size(); ++t)
+  {
+    surfaceNormal[t] = Normalized(AreaNormal(surface.Points, surface.Triangles[t]));
+  }
+  const SheetStates states = MakeSheetStates(mesh, kept, structure.FaceSheet);
+
+  // Vertex normals of the medial sheets (their faces' orientations aligned
+  // with the first).
+  std::vector<Point3> normal(nv, Point3{ 0, 0, 0 });
+  std::vector<std::uint8_t> used(nv, 0);
+  for (Index f : kept)
+  {
+    const Point3 n = AreaNormal(mesh.Centers, mesh.Faces[f]);
+    for (Index v : mesh.Faces[f])
+    {
+      normal[v] = normal[v] + (Dot(normal[v], n) < 0.0 ? -1.0 : 1.0) * n;
+      used[v] = 1;
+    }
+  }
+
+  // Vertices of one sheet between two parallel sides: moved to the middle
+  // between them. Elsewhere (where a side turns into a fillet, a rib or a
+  // corner) the vertex is straightened onto the wall's plane below.
+  std::vector<double> facetAngle(surface.Triangles.size(), 0.0);
+  const TriangleAdjacency adjacency = ComputeTriangleAdjacency(surface, SmoothSideAngle);
+  for (std::size_t t = 0; t < facetAngle.size(); ++t)
+  {
+    for (Index u : adjacency.Neighbour[t])
+    {
+      const double angle = u < 0
+        ? M_PI
+        : std::acos(std::max(-1.0, std::min(1.0, Dot(surfaceNormal[t], surfaceNormal[u]))));
+      if (angle < SmoothSideAngle)
+      {
+        facetAngle[t] = std::max(facetAngle[t], angle);
+      }
+    }
+  }
+  const WallProbe probe{ locator, surfaceNormal, facetAngle };
+  const double probeReach = 1.5 * walls.WallThickness;
+  std::vector<Point3> position = mesh.Centers;
+  std::vector<double> thickness(nv);
+  std::vector<std::uint8_t> isWall(nv, 0);
+  std::vector<MidSurfacePointType> type(nv, MidSurfacePointType::Medial);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    thickness[v] = 2.0 * mesh.Radii[v];
+    if (used[v] && states.Offsets[v + 1] - states.Offsets[v] == 1 && Norm(normal[v]) > 0.0 &&
+      probe.Centre(mesh.Centers[v], Normalized(normal[v]),
+        std::max(3.0 * mesh.Radii[v], probeReach), position[v], thickness[v]))
+    {
+      isWall[v] = 1;
+      type[v] = MidSurfacePointType::Centred;
+      ++out.CentredPoints;
+    }
+  }
+  // The walls' normals again, from the centred vertices: the medial
+  // triangles tilt with the noise of the discrete medial axis.
+  std::vector<Point3> wallNormal(nv, Point3{ 0, 0, 0 });
+  for (Index f : kept)
+  {
+    const auto& t = mesh.Faces[f];
+    if (isWall[t[0]] && isWall[t[1]] && isWall[t[2]] && !IsSliver(position, t))
+    {
+      const Point3 n = AreaNormal(position, t);
+      for (Index v : t)
+      {
+        wallNormal[v] = wallNormal[v] + (Dot(normal[v], n) < 0.0 ? -1.0 : 1.0) * n;
+      }
+    }
+  }
+  // A centred vertex on no triangle of centred vertices (at the edge of a
+  // wall) takes its centred neighbours' normals, a ring at a time.
+  std::vector<std::vector<Index>> neighbours(nv);
+  for (Index f : kept)
+  {
+    const auto& t = mesh.Faces[f];
+    for (int k = 0; k < 3; ++k)
+    {
+      neighbours[t[k]].push_back(t[(k + 1) % 3]);
+      neighbours[t[(k + 1) % 3]].push_back(t[k]);
+    }
+  }
+  for (int ring = 0; ring < 3; ++ring)
+  {
+    std::vector<Point3> filled = wallNormal;
+    for (std::size_t v = 0; v < nv; ++v)
+    {
+      if (!isWall[v] || Norm(wallNormal[v]) > 0.0)
+      {
+        continue;
+      }
+      for (Index w : neighbours[v])
+      {
+        if (isWall[w] && Norm(wallNormal[w]) > 0.0)
+        {
+          const Point3 n = Normalized(wallNormal[w]);
+          filled[v] = filled[v] + (Dot(normal[v], n) < 0.0 ? -1.0 : 1.0) * n;
+        }
+      }
+    }
+    wallNormal.swap(filled);
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    wallNormal[v] = Normalized(Norm(wallNormal[v]) > 0.0 ? wallNormal[v] : normal[v]);
+  }
+
+  // Every other vertex (branches towards junctions and rims) onto the plane
+  // of the nearest wall vertex of each of its sheets, where those planes meet.
+  const std::vector<Index> source =
+    NearestWallVertex(mesh, kept, structure.FaceSheet, states, isWall);
+  std::vector<PlaneSet> planes(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    if (!used[v])
+    {
+      continue;
+    }
+    if (isWall[v])
+    {
+      planes[v].Add(position[v], wallNormal[v]);
+      continue;
+    }
+    double sum = 0.0;
+    int count = 0;
+    for (Index s = states.Offsets[v]; s < states.Offsets[v + 1]; ++s)
+    {
+      const Index w = source[s];
+      if (w >= 0)
+      {
+        planes[v].Add(position[w], wallNormal[w]);
+        sum += thickness[w];
+        ++count;
+      }
+    }
+    if (count == 0)
+    {
+      planes[v].Add(position[v], wallNormal[v]);
+      continue;
+    }
+    position[v] = planes[v].Meet(mesh.Centers[v]);
+    type[v] = planes[v].Normals.size() > 1 ? MidSurfacePointType::Junction
+                                           : MidSurfacePointType::Straightened;
+    thickness[v] = sum / count;
+    if (type[v] == MidSurfacePointType::Straightened)
+    {
+      // Where a chord across the wall meets two parallel sides alike, its
+      // middle corrects the plane's tilt; a junction keeps where its walls'
+      // planes meet and their mean thickness.
+      const Point3 n = Normalized(planes[v].Normals[0]);
+      const auto chord = probe.Chord(position[v], n, probeReach);
+      if (chord.Thickness > 0.0)
+      {
+        position[v] = position[v] + chord.Offset * n;
+        thickness[v] = chord.Thickness;
+      }
+    }
+  }
+
+  // The kept faces on compact point ids, flat ones dropped.
+  std::vector<Index> pointOf(nv, -1);
+  std::vector<std::array<Index, 3>> faces;
+  double scale = 0.0;
+  for (const Point3& p : surface.Points)
+  {
+    scale = std::max(scale, Norm(p - surface.Points[0]));
+  }
+  for (Index f : kept)
+  {
+    const auto& t = mesh.Faces[f];
+    if (!(Norm(AreaNormal(position, t)) > 1e-12 * scale * scale))
+    {
+      ++out.DroppedTriangles;
+      continue;
+    }
+    std::array<Index, 3> face;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (pointOf[t[k]] < 0)
+      {
+        pointOf[t[k]] = static_cast<Index>(out.Mesh.Points.size());
+        out.Mesh.Points.push_back(position[t[k]]);
+        out.Thickness.push_back(thickness[t[k]]);
+        out.MedialVertex.push_back(t[k]);
+        out.PointType.push_back(type[t[k]]);
+      }
+      face[k] = pointOf[t[k]];
+    }
+    faces.push_back(face);
+  }
+  OrientConsistently(faces);
+  const std::size_t medialPoints = out.Mesh.Points.size();
+  std::vector<PlaneSet> pointPlanes(medialPoints);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    if (pointOf[v] >= 0)
+    {
+      pointPlanes[pointOf[v]] = planes[v];
+    }
+  }
+
+  // Free boundaries out along the mid-surface to the lateral faces.
+  std::map<std::array<Index, 2>, int> edgeUses;
+  for (const auto& t : faces)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++edgeUses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+    }
+  }
+  std::vector<std::array<Index, 3>> boundary; // a, b as in the face, then the face
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    const auto& t = faces[f];
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = t[k], b = t[(k + 1) % 3];
+      if (edgeUses[{ std::min(a, b), std::max(a, b) }] == 1)
+      {
+        boundary.push_back({ a, b, static_cast<Index>(f) });
+      }
+    }
+  }
+  std::vector<Index> extended(medialPoints, -1);
+  if (options.ExtendToLateralFaces)
+  {
+    std::vector<Point3> outward(medialPoints, Point3{ 0, 0, 0 });
+    for (const auto& e : boundary)
+    {
+      const auto& points = out.Mesh.Points;
+      const Point3 n = AreaNormal(points, faces[e[2]]);
+      const Point3 d = Normalized(Cross(points[e[1]] - points[e[0]], n));
+      outward[e[0]] = outward[e[0]] + d;
+      outward[e[1]] = outward[e[1]] + d;
+    }
+    // The mid-surface so far: a boundary that faces another wall across a
+    // gap (a notch of the discrete medial axis at a junction) is stitched
+    // to it rather than run on to the surface.
+    const TriangleMesh straightened{ out.Mesh.Points, faces };
+    const TriangleLocator midLocator(straightened);
+    for (std::size_t p = 0; p < medialPoints; ++p)
+    {
+      const PlaneSet& plane = pointPlanes[p];
+      if (!(Norm(outward[p]) > 0.0) || plane.Normals.empty())
+      {
+        continue;
+      }
+      const Point3 origin = out.Mesh.Points[p];
+      const double reach = out.Thickness[p];
+      const Point3 along = plane.AlongAll(outward[p]);
+      Point3 step{ 0, 0, 0 };
+      if (Norm(along) > 1e-9 * Norm(outward[p]))
+      {
+        const Point3 dir = Normalized(along);
+        // Another wall's triangle: the ray runs along its own wall's plane.
+        const auto hit = midLocator.FirstHitIf(origin, dir, 1e-3 * reach, reach,
+          [&](Index t)
+          {
+            const Point3 n = Normalized(AreaNormal(straightened.Points, straightened.Triangles[t]));
+            for (const Point3& m : plane.Normals)
+            {
+              if (std::fabs(Dot(n, Normalized(m))) >= SamePlaneCosine)
+              {
+                return false;
+              }
+            }
+            return true;
+          });
+        if (hit.Triangle >= 0)
+        {
+          step = hit.Distance * dir;
+        }
+      }
+      if (!(Norm(step) > 0.0))
+      {
+        // The nearest lateral face (standing steeply on the wall's planes),
+        // reached along the mid-surface and away from the wall.
+        const auto lateral = [&](Index t)
+        {
+          for (const Point3& n : plane.Normals)
+          {
+            const double c = Dot(surfaceNormal[t], Normalized(n));
+            if (std::sqrt(std::max(0.0, 1.0 - c * c)) < LateralFaceSine)
+            {
+              return false;
+            }
+          }
+          return true;
+        };
+        const auto closest = locator.Closest(origin, lateral, reach);
+        if (closest.Triangle >= 0)
+        {
+          const Point3 toFace = plane.AlongAll(closest.Point - origin);
+          if (Dot(toFace, outward[p]) > 0.0)
+          {
+            step = toFace;
+          }
+        }
+      }
+      if (Norm(step) > 1e-3 * reach)
+      {
+        // The chord just inside the lateral face (further in where it slips
+        // off the sides there): the thickness, and the middle of the face.
+        const Point3 n = Normalized(plane.Normals[0]);
+        WallProbe::ChordResult chord;
+        for (double along : { 1.0 - 1e-3, 0.9, 0.5 })
+        {
+          chord = probe.Chord(origin + along * step, n, probeReach);
+          if (chord.Thickness > 0.0)
+          {
+            break;
+          }
+        }
+        extended[p] = static_cast<Index>(out.Mesh.Points.size());
+        out.Mesh.Points.push_back(origin + step + chord.Offset * n);
+        out.Thickness.push_back(chord.Thickness > 0.0 ? chord.Thickness : out.Thickness[p]);
+        out.MedialVertex.push_back(-1);
+        out.PointType.push_back(MidSurfacePointType::Lateral);
+        ++out.ExtendedPoints;
+      }
+    }
+    for (const auto& e : boundary)
+    {
+      // The strip's triangles use the edge b -> a, as a neighbour must;
+      // flat ones (a boundary point that did not move) are left out.
+      const Index a = e[0], b = e[1], ea = extended[a], eb = extended[b];
+      const auto add = [&](const std::array<Index, 3>& t)
+      {
+        if (Norm(AreaNormal(out.Mesh.Points, t)) > 1e-12 * scale * scale)
+        {
+          faces.push_back(t);
+        }
+        else
+        {
+          ++out.DroppedTriangles;
+        }
+      };
+      if (ea >= 0)
+      {
+        add({ b, a, ea });
+      }
+      if (eb >= 0)
+      {
+        add({ b, ea >= 0 ? ea : a, eb });
+      }
+    }
+  }
+  out.Mesh.Triangles = faces;
+
+  // Walls: triangles joined where the surface bends gently, and at
+  // junctions where one continues another's plane.
+  std::map<std::array<Index, 2>, std::vector<Index>> edgeFaces;
+  std::vector<Point3> unit(faces.size());
+  std::vector<std::uint8_t> sliver(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    unit[f] = Normalized(AreaNormal(out.Mesh.Points, faces[f]));
+    sliver[f] = IsSliver(out.Mesh.Points, faces[f]);
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
+      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(static_cast<Index>(f));
+    }
+  }
+  DisjointSets wallSets(faces.size());
+  for (const auto& [edge, around] : edgeFaces)
+  {
+    if (around.size() == 1)
+    {
+      ++out.BoundaryEdges;
+      continue;
+    }
+    out.JunctionEdges += around.size() > 2 ? 1 : 0;
+    const double cosine = around.size() == 2 ? SameWallCosine : SamePlaneCosine;
+    for (std::size_t i = 0; i < around.size(); ++i)
+    {
+      for (std::size_t j = i + 1; j < around.size(); ++j)
+      {
+        if (!sliver[around[i]] && !sliver[around[j]] &&
+          std::fabs(Dot(unit[around[i]], unit[around[j]])) >= cosine)
+        {
+          wallSets.Union(around[i], around[j]);
+        }
+      }
+    }
+  }
+  // A sliver joins one wall only (at a crease it must not join the walls on
+  // its sides): its largest neighbour, preferring a proper triangle across
+  // an edge of two, then any proper triangle, then another sliver.
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    if (!sliver[f])
+    {
+      continue;
+    }
+    Index best = -1;
+    double bestScore = -1.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
+      const auto& around = edgeFaces[{ std::min(a, b), std::max(a, b) }];
+      for (Index g : around)
+      {
+        if (g == static_cast<Index>(f))
+        {
+          continue;
+        }
+        const double rank = sliver[g] ? 0.0 : (around.size() == 2 ? 2.0 : 1.0);
+        const double score =
+          rank + Norm(AreaNormal(out.Mesh.Points, faces[g])) / (scale * scale + 1e-300) * 1e-3;
+        if (score > bestScore)
+        {
+          best = g;
+          bestScore = score;
+        }
+      }
+    }
+    if (best >= 0)
+    {
+      wallSets.Union(static_cast<Index>(f), best);
+    }
+  }
+  // Fragments (under MinimumWallFraction of the area: debris of the
+  // discrete medial axis at junctions and of the stitching) join the
+  // largest wall they touch (by a point at least), as flaps join their sheet.
+  std::vector<double> faceArea(faces.size()), rootArea(faces.size(), 0.0);
+  double totalArea = 0.0;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    faceArea[f] = 0.5 * Norm(AreaNormal(out.Mesh.Points, faces[f]));
+    totalArea += faceArea[f];
+  }
+  std::vector<std::vector<Index>> vertexFaces(out.Mesh.Points.size());
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    for (Index v : faces[f])
+    {
+      vertexFaces[v].push_back(static_cast<Index>(f));
+    }
+  }
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    std::fill(rootArea.begin(), rootArea.end(), 0.0);
+    for (std::size_t f = 0; f < faces.size(); ++f)
+    {
+      rootArea[wallSets.Find(static_cast<Index>(f))] += faceArea[f];
+    }
+    std::vector<Index> host(faces.size(), -1);
+    for (const auto& around : vertexFaces)
+    {
+      for (Index f : around)
+      {
+        const Index r = wallSets.Find(f);
+        if (rootArea[r] >= MinimumWallFraction * totalArea)
+        {
+          continue;
+        }
+        for (Index g : around)
+        {
+          const Index q = wallSets.Find(g);
+          if (q != r && (host[r] < 0 || rootArea[q] > rootArea[host[r]]))
+          {
+            host[r] = q;
+          }
+        }
+      }
+    }
+    for (std::size_t r = 0; r < faces.size(); ++r)
+    {
+      if (host[r] >= 0 && rootArea[host[r]] > rootArea[r])
+      {
+        wallSets.Union(static_cast<Index>(r), host[r]);
+      }
+    }
+  }
+  std::vector<Index> wallOfRoot(faces.size(), -1);
+  out.WallOfTriangle.resize(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    const Index root = wallSets.Find(static_cast<Index>(f));
+    if (wallOfRoot[root] < 0)
+    {
+      wallOfRoot[root] = static_cast<Index>(out.Walls.size());
+      out.Walls.push_back({ 0.0, 0.0, Infinity, -Infinity });
+    }
+    out.WallOfTriangle[f] = wallOfRoot[root];
+    MidSurfaceWall& wall = out.Walls[wallOfRoot[root]];
+    const double area = faceArea[f];
+    wall.Area += area;
+    for (Index v : faces[f])
+    {
+      wall.MeanThickness += area * out.Thickness[v] / 3.0;
+      wall.MinimumThickness = std::min(wall.MinimumThickness, out.Thickness[v]);
+      wall.MaximumThickness = std::max(wall.MaximumThickness, out.Thickness[v]);
+    }
+  }
+  for (MidSurfaceWall& wall : out.Walls)
+  {
+    wall.MeanThickness = wall.Area > 0.0 ? wall.MeanThickness / wall.Area : 0.0;
+  }
+  return out;
+}
+}

@@ -1,0 +1,247 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// vtkMidSurfaceExtractor on thin-walled parts whose mid-surfaces are known
+// exactly (vtkAnalyticShapeSource's T-plate, L-bracket and wedge plate),
+// and the wall selection's rules in Core.
+#include "Structure/WallSheets.h"
+#include "vtkAnalyticShapeSource.h"
+#include "vtkMidSurfaceExtractor.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkMassProperties.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataConnectivityFilter.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+namespace
+{
+constexpr double Length = 2.0, Width = 2.0, Height = 1.0, Wall = 0.1;
+
+struct MidSurfaceFigures
+{
+  double MaximumDeviation = 0.0;      // from the true mid-surface, over all points
+  double MaximumThicknessError = 0.0; // relative to the true thickness, over all points
+  double Area = 0.0;
+  vtkIdType Walls = 0;
+  vtkIdType JunctionEdges = 0;
+  int Pieces = 0;
+};
+
+// Runs the extractor (which computes the CAD preset's medial axis) on the
+// shape and measures it against the truth: the distance from a point to the
+// true mid-surface, and the true thickness there.
+MidSurfaceFigures Measure(vtkAnalyticShapeSource* shape,
+  const std::function<double(const double*)>& deviation,
+  const std::function<double(const double*)>& trueThickness)
+{
+  vtkNew<vtkMidSurfaceExtractor> mid;
+  mid->SetInputConnection(shape->GetOutputPort());
+  mid->Update();
+  vtkPolyData* out = mid->GetOutput();
+  MidSurfaceFigures f;
+  vtkDataArray* thickness = out->GetPointData()->GetArray("Thickness");
+  EXPECT_NE(thickness, nullptr);
+  EXPECT_NE(out->GetPointData()->GetArray("MedialVertexId"), nullptr);
+  EXPECT_NE(out->GetPointData()->GetArray("PointType"), nullptr);
+  EXPECT_NE(out->GetCellData()->GetArray("WallId"), nullptr);
+  for (vtkIdType i = 0; thickness && i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    f.MaximumDeviation = std::max(f.MaximumDeviation, deviation(p));
+    f.MaximumThicknessError = std::max(
+      f.MaximumThicknessError, std::fabs(thickness->GetComponent(i, 0) / trueThickness(p) - 1.0));
+  }
+  vtkNew<vtkMassProperties> mass;
+  mass->SetInputData(out);
+  mass->Update();
+  f.Area = mass->GetSurfaceArea();
+  f.Walls = mid->GetNumberOfWalls();
+  f.JunctionEdges = mid->GetNumberOfJunctionEdges();
+  vtkNew<vtkPolyDataConnectivityFilter> pieces;
+  pieces->SetInputData(out);
+  pieces->SetExtractionModeToAllRegions();
+  pieces->Update();
+  f.Pieces = pieces->GetNumberOfExtractedRegions();
+  EXPECT_EQ(out->GetFieldData()->GetArray("WallArea")->GetNumberOfTuples(), f.Walls);
+  return f;
+}
+
+vtkSmartPointer<vtkAnalyticShapeSource> Part(int shape, double fillet)
+{
+  auto part = vtkSmartPointer<vtkAnalyticShapeSource>::New();
+  part->SetShape(shape);
+  part->SetXLength(Length);
+  part->SetYLength(Width);
+  part->SetZLength(Height);
+  part->SetThickness(Wall);
+  part->SetFilletRadius(fillet);
+  return part;
+}
+
+double Constant(const double*)
+{
+  return Wall;
+}
+}
+
+// The plate's mid-plane z = 0 across its whole width and the rib's y = 0
+// from there to the rib's top: two walls stitched along the line y = z = 0,
+// ends extended to the lateral faces.
+TEST(MidSurface, TPlateIsTwoWallsStitchedAtTheJunction)
+{
+  for (double fillet : { 0.0, 0.1 })
+  {
+    SCOPED_TRACE(fillet);
+    auto part = Part(vtkAnalyticShapeSource::T_PLATE, fillet);
+    const auto deviation = [](const double* p)
+    {
+      const double plate = std::fabs(p[1]) <= 0.5 * Width + 1e-9 ? std::fabs(p[2]) : 1e9;
+      const double rib = p[2] >= -1e-9 ? std::fabs(p[1]) : 1e9;
+      return std::min(plate, rib);
+    };
+    const MidSurfaceFigures f = Measure(part, deviation, Constant);
+    // Sharp: exact to rounding; filleted: a few points where the rib meets
+    // its fillets lean by up to 0.7% of t (their planes from the fillets'
+    // first triangles).
+    EXPECT_LE(f.MaximumDeviation, (fillet > 0.0 ? 0.01 : 0.005) * Wall);
+    EXPECT_LE(f.MaximumThicknessError, 0.01);
+    const double area = Length * (Width + Height + 0.5 * Wall);
+    EXPECT_NEAR(f.Area, area, 0.01 * area);
+    EXPECT_EQ(f.Walls, 2);
+    EXPECT_GT(f.JunctionEdges, 0);
+    EXPECT_EQ(f.Pieces, 1);
+  }
+}
+
+// Sharp: the planes z = t/2 and y = t/2 meeting at a crease (two walls);
+// filleted: one wall bending round a quarter circle of radius R + t/2.
+TEST(MidSurface, LBracketBendsRoundItsCorner)
+{
+  for (double fillet : { 0.0, 0.1 })
+  {
+    SCOPED_TRACE(fillet);
+    auto part = Part(vtkAnalyticShapeSource::L_BRACKET, fillet);
+    const auto deviation = [fillet](const double* p)
+    {
+      const double c = Wall + fillet;
+      if (fillet > 0.0 && p[1] < c && p[2] < c)
+      {
+        return std::fabs(std::hypot(p[1] - c, p[2] - c) - (fillet + 0.5 * Wall));
+      }
+      const double plate = p[1] >= 0.5 * Wall - 1e-9 ? std::fabs(p[2] - 0.5 * Wall) : 1e9;
+      const double wall = p[2] >= 0.5 * Wall - 1e-9 ? std::fabs(p[1] - 0.5 * Wall) : 1e9;
+      return std::min(plate, wall);
+    };
+    const MidSurfaceFigures f = Measure(part, deviation, Constant);
+    // The filleted bracket's arcs are tessellated: their triangles alone
+    // stand 0.18% of t off the true cylinders, and the points added on the
+    // lateral faces at the arcs' ends up to 0.62%.
+    EXPECT_LE(f.MaximumDeviation, (fillet > 0.0 ? 0.01 : 0.005) * Wall);
+    EXPECT_LE(f.MaximumThicknessError, 0.01);
+    const double area = fillet > 0.0
+      ? Length * (Width + Height - 2.0 * (Wall + fillet) + 0.5 * M_PI * (fillet + 0.5 * Wall))
+      : Length * (Width + Height - Wall);
+    EXPECT_NEAR(f.Area, area, 0.01 * area);
+    EXPECT_EQ(f.Walls, fillet > 0.0 ? 1 : 2);
+    EXPECT_EQ(f.Pieces, 1);
+  }
+}
+
+// A plate tapering from 0.05 to 0.1: the mid-plane z = 0, and the
+// thickness following the taper.
+TEST(MidSurface, WedgePlateThicknessFollowsTheTaper)
+{
+  auto part = Part(vtkAnalyticShapeSource::WEDGE_PLATE, 0.0);
+  part->SetThickness(0.05);
+  part->SetEndThickness(0.1);
+  const auto thickness = [](const double* p) { return 0.05 + 0.05 * (p[1] + 0.5 * Width) / Width; };
+  const MidSurfaceFigures f = Measure(
+    part, [](const double* p) { return std::fabs(p[2]); }, thickness);
+  EXPECT_LE(f.MaximumDeviation, 0.005 * 0.05);
+  EXPECT_LE(f.MaximumThicknessError, 0.01);
+  EXPECT_NEAR(f.Area, Length * Width, 0.01 * Length * Width);
+  EXPECT_EQ(f.Walls, 1);
+  EXPECT_EQ(f.JunctionEdges, 0);
+  EXPECT_EQ(f.Pieces, 1);
+}
+
+// A part without thin walls gives an empty mid-surface (and a warning, not
+// an error); so does a wall thicker than the WallThickness the user sets.
+TEST(MidSurface, NoWallsWhereNothingIsThin)
+{
+  int warnings = 0;
+  vtkNew<vtkCallbackCommand> count;
+  count->SetClientData(&warnings);
+  count->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+
+  vtkNew<vtkAnalyticShapeSource> box;
+  box->SetShapeToBox();
+  vtkNew<vtkMidSurfaceExtractor> mid;
+  mid->AddObserver(vtkCommand::WarningEvent, count);
+  mid->SetInputConnection(box->GetOutputPort());
+  mid->Update();
+  EXPECT_EQ(mid->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(mid->GetNumberOfWallSheets(), 0);
+  EXPECT_EQ(warnings, 1);
+
+  auto part = Part(vtkAnalyticShapeSource::T_PLATE, 0.0);
+  mid->SetInputConnection(part->GetOutputPort());
+  mid->SetWallThickness(0.5 * Wall);
+  mid->Update();
+  EXPECT_EQ(mid->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(warnings, 2);
+  mid->SetWallThickness(2.0 * Wall);
+  mid->Update();
+  EXPECT_EQ(mid->GetNumberOfWalls(), 2);
+  EXPECT_DOUBLE_EQ(mid->GetEstimatedWallThickness(), 2.0 * Wall);
+}
+
+// A medial mesh without radii is refused with an error naming it.
+TEST(MidSurface, MedialMeshWithoutRadiusIsRefused)
+{
+  int errors = 0;
+  vtkNew<vtkCallbackCommand> count;
+  count->SetClientData(&errors);
+  count->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  auto part = Part(vtkAnalyticShapeSource::T_PLATE, 0.0);
+  vtkNew<vtkMidSurfaceExtractor> mid;
+  mid->AddObserver(vtkCommand::ErrorEvent, count);
+  mid->SetInputConnection(0, part->GetOutputPort());
+  mid->SetMedialAxisConnection(part->GetOutputPort()); // a surface, no radii
+  mid->Update();
+  EXPECT_EQ(errors, 1);
+  EXPECT_EQ(mid->GetOutput()->GetNumberOfCells(), 0);
+}
+
+// The slope of the radius on a triangle, and MidSurfer's automatic wall
+// thickness: the largest value in the fullest histogram bin.
+TEST(MidSurface, WallRules)
+{
+  using medialaxis::Point3;
+  // r = 0.1 + 0.2 x on the unit right triangle: |grad r| = 0.2.
+  EXPECT_NEAR(
+    medialaxis::RadiusSlope(Point3{ 0, 0, 0 }, Point3{ 1, 0, 0 }, Point3{ 0, 1, 0 }, 0.1, 0.3, 0.1),
+    0.2, 1e-12);
+  EXPECT_EQ(
+    medialaxis::RadiusSlope(Point3{ 0, 0, 0 }, Point3{ 1, 0, 0 }, Point3{ 2, 0, 0 }, 0.1, 0.2, 0.3),
+    1.0);
+  // Most of the area 0.1 thick (0.1 to 0.1008, one bin 5% of the median
+  // wide), a little 0.3 thick.
+  const std::vector<double> thickness{ 0.1, 0.1004, 0.1008, 0.3, 0.31 };
+  const std::vector<double> area{ 3.0, 3.0, 3.0, 1.0, 1.0 };
+  EXPECT_DOUBLE_EQ(medialaxis::WallThicknessFromHistogram(thickness, area), 0.1008);
+  EXPECT_EQ(medialaxis::WallThicknessFromHistogram({}, {}), 0.0);
+}

@@ -14,6 +14,7 @@
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialStructure.h"
 #include "vtkMedialSurfaceValidator.h"
+#include "vtkMidSurfaceExtractor.h"
 #include "vtkStructuralMedialAxis.h"
 #include "vtkSurfaceFileReader.h"
 
@@ -145,14 +146,21 @@ Options:
                         point data MedialType and TangentComponents, cell data
                         SheetId) and seams.vtp (seam edges with SeamId); the
                         report counts them
+  --mid-surface         thin-walled parts: write mid_surface.vtp, the walls'
+                        mid-surface (pruned, centred between the sides,
+                        stitched where walls meet, extended to the lateral
+                        faces) with point data Thickness and cell data
+                        WallId; the report gives the walls and the wall
+                        thickness
   --error               measure the two-sided Hausdorff distance between the
                         surface and the envelope (% of the bounding-box
                         diagonal) and write distance.vtp (the surface with
                         point data Distance)
   --screenshot FILE     render the result offscreen into a PNG: the surface
                         (semi-transparent, fillet faces coloured with
-                        --fillets), the MAT coloured by radius and the fillet
-                        centre lines; without an X display the tool runs
+                        --fillets), the MAT coloured by radius (with
+                        --mid-surface the mid-surface by thickness instead)
+                        and the fillet centre lines; without an X display the tool runs
                         itself under xvfb-run (Debian package xvfb)
   --report FILE         write a JSON report: parameters, per-stage times, peak
                         memory, counts, Euler characteristic, triangle quality
@@ -180,8 +188,9 @@ struct Options
   int Adaptive = -1;         // -1: from the preset
   double MaximumError = 0.0; // 0: --target
   bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
-       Fillets = false, Structure = false, SpikeCollapses = false, ClampRadii = false,
-       AbsorbSpikes = false, QMat = false, FinalFit = true, FitBoundaryRadii = true;
+       Fillets = false, Structure = false, MidSurface = false, SpikeCollapses = false,
+       ClampRadii = false, AbsorbSpikes = false, QMat = false, FinalFit = true,
+       FitBoundaryRadii = true;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
   double FeatureAngle = 45.0;
@@ -408,6 +417,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--structure")
     {
       o.Structure = true;
+    }
+    else if (arg == "--mid-surface")
+    {
+      o.MidSurface = true;
     }
     else if (arg == "--error")
     {
@@ -753,11 +766,23 @@ int main(int argc, char** argv)
     }
     WriteOutputs(structure, { "structure.vtp", "seams.vtp" }, dir, written);
   }
+  double midSurfaceSeconds = 0.0;
+  vtkNew<vtkMidSurfaceExtractor> midSurface;
+  if (o.MidSurface)
+  {
+    midSurface->SetInputConnection(0, validator->GetOutputPort());
+    midSurface->SetInputData(1, mat);
+    if (!UpdateStage(midSurface, "mid-surface", nullptr, midSurfaceSeconds))
+    {
+      return ComputationFailed;
+    }
+    WriteOutputs(midSurface, { "mid_surface.vtp" }, dir, written);
+  }
   if (!o.Screenshot.empty())
   {
     const std::string problem = medialaxis::WriteScreenshot(o.Screenshot, validator->GetOutput(),
-      mat, o.Fillets ? fillets->GetOutput(1) : nullptr, o.Fillets ? fillets->GetOutput(0) : nullptr,
-      1200, 900);
+      o.MidSurface ? midSurface->GetOutput() : mat, o.Fillets ? fillets->GetOutput(1) : nullptr,
+      o.Fillets ? fillets->GetOutput(0) : nullptr, 1200, 900);
     if (!problem.empty())
     {
       std::cerr << "medial-axis: screenshot failed: " << problem << "\n";
@@ -828,6 +853,13 @@ int main(int argc, char** argv)
     }
     std::cout << "\n";
   }
+  if (o.MidSurface)
+  {
+    std::cout << "  mid-surface: " << midSurface->GetNumberOfWalls() << " walls from "
+              << midSurface->GetNumberOfWallSheets() << " medial sheets, wall thickness "
+              << midSurface->GetEstimatedWallThickness() << ", "
+              << midSurface->GetNumberOfJunctionEdges() << " junction edges\n";
+  }
   for (const std::string& path : written)
   {
     std::cout << "  wrote " << path << "\n";
@@ -874,8 +906,9 @@ int main(int argc, char** argv)
     }
     json << ", \"QueueInitialisation\": " << FieldValue(mat, "QueueInitialisationSeconds")
          << ", \"Envelope\": " << envelopeSeconds << ", \"Fillets\": " << filletSeconds
-         << ", \"Structure\": " << structureSeconds << ", \"Error\": " << errorSeconds
-         << ", \"wall\": " << seconds << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
+         << ", \"Structure\": " << structureSeconds << ", \"MidSurface\": " << midSurfaceSeconds
+         << ", \"Error\": " << errorSeconds << ", \"wall\": " << seconds
+         << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
          << ",\n  \"counts\": {\"sites\": " << FieldValue(mat, "Sites")
          << ", \"initial_vertices\": " << FieldValue(mat, "InitialVertices")
          << ", \"initial_triangles\": " << FieldValue(mat, "InitialTriangles")
@@ -925,6 +958,14 @@ int main(int argc, char** argv)
       }
       json << "}, \"tangent_component_agreement\": "
            << FieldValue(structure->GetOutput(0), "TangentComponentAgreement") << "}";
+    }
+    if (o.MidSurface)
+    {
+      json << ",\n  \"mid_surface\": {\"walls\": " << midSurface->GetNumberOfWalls()
+           << ", \"wall_sheets\": " << midSurface->GetNumberOfWallSheets()
+           << ", \"wall_thickness\": " << midSurface->GetEstimatedWallThickness()
+           << ", \"junction_edges\": " << midSurface->GetNumberOfJunctionEdges()
+           << ", \"triangles\": " << midSurface->GetOutput()->GetNumberOfPolys() << "}";
     }
     if (o.Error)
     {

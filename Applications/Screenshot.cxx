@@ -76,11 +76,16 @@ std::string WriteScreenshot(const std::string& path, vtkPolyData* surface, vtkPo
 
   vtkNew<vtkPolyDataMapper> medialMapper;
   medialMapper->SetInputData(medial);
-  if (vtkDataArray* radius = medial->GetPointData()->GetArray("Radius"))
+  // A medial mesh by its radii, a mid-surface by its thickness.
+  for (const char* name : { "Radius", "Thickness" })
   {
-    medialMapper->SetScalarModeToUsePointFieldData();
-    medialMapper->SelectColorArray("Radius");
-    medialMapper->SetScalarRange(radius->GetRange());
+    if (vtkDataArray* values = medial->GetPointData()->GetArray(name))
+    {
+      medialMapper->SetScalarModeToUsePointFieldData();
+      medialMapper->SelectColorArray(name);
+      medialMapper->SetScalarRange(values->GetRange());
+      break;
+    }
   }
   vtkNew<vtkLookupTable> radiusTable; // blue: thin, red: thick
   radiusTable->SetHueRange(0.667, 0.0);

@@ -201,6 +201,43 @@ class CommandLineTest(unittest.TestCase):
         self.assertLess(data["hausdorff"]["two_sided_percent"], 5.0)
         self.assertGreater(data["hausdorff"]["two_sided_percent"], 0.0)
 
+    def test_mid_surface(self):
+        # A T-plate (plate 2 x 2, rib 1 high, walls 0.1 thick): two walls, the
+        # plate's and the rib's, 0.1 thick, stitched along the junction.
+        writer = vtk.vtkXMLPolyDataWriter()
+        source = medialaxis.vtkAnalyticShapeSource()
+        source.SetShapeToTPlate()
+        source.SetXLength(2.0)
+        source.SetYLength(2.0)
+        source.SetZLength(1.0)
+        source.SetThickness(0.1)
+        source.SetFilletRadius(0.0)  # sharp: the same thickness everywhere
+        writer.SetInputConnection(source.GetOutputPort())
+        writer.SetFileName(self.path("tplate.vtp"))
+        self.assertEqual(writer.Write(), 1)
+        out = self.path("out")
+        report = self.path("report.json")
+        result = run("--preset", "cad", "--mid-surface", "--report", report,
+                     self.path("tplate.vtp"), out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("mid-surface: 2 walls", result.stdout)
+        with open(report) as f:
+            data = json.load(f)
+        mid = data["mid_surface"]
+        self.assertEqual(mid["walls"], 2)
+        self.assertAlmostEqual(mid["wall_thickness"], 0.1, delta=0.01)
+        self.assertGreater(mid["junction_edges"], 0)
+        self.assertGreater(data["seconds"]["MidSurface"], 0.0)
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(os.path.join(out, "mid_surface.vtp"))
+        reader.Update()
+        surface = reader.GetOutput()
+        self.assertEqual(surface.GetNumberOfPolys(), mid["triangles"])
+        thickness = surface.GetPointData().GetArray("Thickness")
+        self.assertAlmostEqual(thickness.GetRange()[0], 0.1, delta=0.001)
+        self.assertAlmostEqual(thickness.GetRange()[1], 0.1, delta=0.001)
+        self.assertIsNotNone(surface.GetCellData().GetArray("WallId"))
+
     def test_fillets(self):
         # A box with rounded edges (radius 0.1, side 2): 12 fillets, each a
         # centre line of length 1.8 with radius 0.1.

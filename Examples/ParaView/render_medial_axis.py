@@ -1,13 +1,16 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """pvbatch/pvpython: compute the Structural MAT of a surface with the plugin and
 render it (coloured by radius, or with --structure by sphere type: sheet,
-seam, junction, rim, feature, fillet, curve) inside the semi-transparent
-surface, to a PNG.
+seam, junction, rim, feature, fillet, curve; or with --mid-surface the
+thin walls' mid-surface by thickness) inside the semi-transparent surface,
+to a PNG.
 
     xvfb-run -a -s "-screen 0 1024x768x24" pvbatch render_medial_axis.py \\
-        PLUGIN OUTPUT.png [SURFACE] [--cad] [--structure] [--samples N] [--target N]
+        PLUGIN OUTPUT.png [SURFACE] [--cad] [--structure | --mid-surface]
+        [--samples N] [--target N]
 
-Without SURFACE it uses a generated box with rounded edges.
+Without SURFACE it uses a generated box with rounded edges (with
+--mid-surface a T-plate: walls 0.1 thick, plate 2 x 2, rib 1 high).
 """
 import argparse
 
@@ -19,6 +22,7 @@ parser.add_argument("output")
 parser.add_argument("surface", nargs="?")
 parser.add_argument("--cad", action="store_true", help="the paper's CAD settings")
 parser.add_argument("--structure", action="store_true", help="colour the spheres by type")
+parser.add_argument("--mid-surface", action="store_true", help="show the walls' mid-surface")
 parser.add_argument("--samples", type=int)
 parser.add_argument("--target", type=int)
 parser.add_argument("--size", type=int, nargs=2, default=[1200, 900])
@@ -27,6 +31,9 @@ LoadPlugin(args.plugin, remote=False, ns=globals())
 
 if args.surface:
     surface = OpenDataFile(args.surface)
+elif args.mid_surface:
+    surface = MedialTestShape(Shape="T Plate", XLength=2.0, YLength=2.0, ZLength=1.0,
+                              Thickness=0.1, FilletRadius=0.0)
 else:
     surface = MedialTestShape(Shape="Rounded Box")
 mat = StructuralMedialAxis(Input=surface,
@@ -50,10 +57,12 @@ if args.structure:
     # The restricted Voronoi cells (port 1) give each sphere's tangent
     # components, MATFP's cross-check of the types.
     shown = MedialStructure(Input=OutputPort(mat, 0), Cells=OutputPort(mat, 1))
+elif args.mid_surface:
+    shown = MidSurfaceExtractor(Input=surface, MedialAxis=OutputPort(mat, 0))
 axis = Show(shown, view)
 axis.Representation = "Surface With Edges"
 axis.EdgeColor = [0.15, 0.15, 0.15]
-array = "MedialType" if args.structure else "Radius"
+array = "MedialType" if args.structure else "Thickness" if args.mid_surface else "Radius"
 ColorBy(axis, ("POINTS", array))
 colours = GetColorTransferFunction(array)
 if args.structure:
@@ -79,3 +88,7 @@ if args.structure:
     print("structure: %d sheets, %d seams, %d junction spheres" % (
         fields.GetArray("NumberOfSheets").GetValue(0), fields.GetArray("NumberOfSeams").GetValue(0),
         fields.GetArray("NumberOfJunctionVertices").GetValue(0)))
+if args.mid_surface:
+    fields = result.GetFieldData()
+    print("mid-surface: %d walls, wall thickness %.4f" % (
+        fields.GetArray("NumberOfWalls").GetValue(0), fields.GetArray("WallThickness").GetValue(0)))

@@ -177,6 +177,7 @@ int vtkMidSurfaceExtractor::RequestData(
   medialaxis::AddFieldValue(output, "NumberOfWallSheets", this->NumberOfWallSheets);
   medialaxis::AddFieldValue(output, "JunctionEdges", this->NumberOfJunctionEdges);
   medialaxis::AddFieldValue(output, "BoundaryEdges", static_cast<long long>(mid.BoundaryEdges));
+  medialaxis::AddFieldValue(output, "FoldedEdges", static_cast<long long>(mid.FoldedEdges));
   if (mid.WallSheets == 0)
   {
     vtkWarningMacro(<< "no sheet of the medial axis lies between two parallel sides thinner than "

@@ -31,7 +31,9 @@
  * surface bends by less than 30 degrees, and across junctions where one
  * continues another's plane); field data `WallThickness` (the value used),
  * `NumberOfWalls`, `NumberOfWallSheets`, `JunctionEdges` (edges of three or
- * more triangles, where walls meet), `BoundaryEdges`, and per wall
+ * more triangles, where walls meet), `BoundaryEdges`, `FoldedEdges` (edges
+ * whose triangles still face opposite ways after the folds of the medial
+ * axis' fins are untangled; 0 on a clean result), and per wall
  * `WallArea`, `WallMeanThickness` (area-weighted), `WallMinimumThickness`,
  * `WallMaximumThickness`.
  */

@@ -34,6 +34,7 @@ struct MidSurfaceFigures
   double Area = 0.0;
   vtkIdType Walls = 0;
   vtkIdType JunctionEdges = 0;
+  double FoldedEdges = 0.0;
   int Pieces = 0;
 };
 
@@ -68,6 +69,7 @@ MidSurfaceFigures Measure(vtkAnalyticShapeSource* shape,
   f.Area = mass->GetSurfaceArea();
   f.Walls = mid->GetNumberOfWalls();
   f.JunctionEdges = mid->GetNumberOfJunctionEdges();
+  f.FoldedEdges = out->GetFieldData()->GetArray("FoldedEdges")->GetTuple1(0);
   vtkNew<vtkPolyDataConnectivityFilter> pieces;
   pieces->SetInputData(out);
   pieces->SetExtractionModeToAllRegions();
@@ -121,6 +123,7 @@ TEST(MidSurface, TPlateIsTwoWallsStitchedAtTheJunction)
     EXPECT_EQ(f.Walls, 2);
     EXPECT_GT(f.JunctionEdges, 0);
     EXPECT_EQ(f.Pieces, 1);
+    EXPECT_EQ(f.FoldedEdges, 0.0);
   }
 }
 
@@ -155,6 +158,9 @@ TEST(MidSurface, LBracketBendsRoundItsCorner)
     EXPECT_NEAR(f.Area, area, 0.01 * area);
     EXPECT_EQ(f.Walls, fillet > 0.0 ? 1 : 2);
     EXPECT_EQ(f.Pieces, 1);
+    // The sharp bracket's crease keeps a fold or two: its points may only
+    // move along the crease.
+    EXPECT_LE(f.FoldedEdges, fillet > 0.0 ? 0.0 : 2.0);
   }
 }
 
@@ -174,6 +180,7 @@ TEST(MidSurface, WedgePlateThicknessFollowsTheTaper)
   EXPECT_EQ(f.Walls, 1);
   EXPECT_EQ(f.JunctionEdges, 0);
   EXPECT_EQ(f.Pieces, 1);
+  EXPECT_EQ(f.FoldedEdges, 0.0);
 }
 
 // A part without thin walls gives an empty mid-surface (and a warning, not

@@ -41,6 +41,13 @@ const double MaximumSlide = 0.1;
 const double MaximumChordTilt = 30.0 * M_PI / 180.0;
 // A lateral face stands at least this steeply on the wall's mid-surface.
 const double LateralFaceSine = std::sin(60.0 * M_PI / 180.0);
+// A junction's branches reach this many wall thicknesses (along the sheet)
+// from the nearest centred point: the T's arcs about one, a rib's fillets
+// about two. Farther, the sheet does not join two walls but a wall and
+// something else (a tube, a block), and its triangles are dropped.
+const double MaximumStraightening = 3.0;
+// Rounds of untangling a fold may take.
+const int FoldRounds = 30;
 // Walls smaller than this share of the mid-surface are fragments.
 const double MinimumWallFraction = 0.001;
 // A wall bends by less than this from one triangle to the next.
@@ -302,7 +309,7 @@ SheetStates MakeSheetStates(
 // (Dijkstra from all wall vertices at once); -1 where none is reachable.
 std::vector<Index> NearestWallVertex(const MedialMesh& mesh, const std::vector<Index>& kept,
   const std::vector<Index>& faceSheet, const SheetStates& states,
-  const std::vector<std::uint8_t>& isWall)
+  const std::vector<std::uint8_t>& isWall, std::vector<double>& distance)
 {
   const std::size_t ns = states.Sheet.size();
   std::vector<std::vector<std::pair<Index, double>>> next(ns);
@@ -318,7 +325,7 @@ std::vector<Index> NearestWallVertex(const MedialMesh& mesh, const std::vector<I
       next[b].emplace_back(a, w);
     }
   }
-  std::vector<double> distance(ns, Infinity);
+  distance.assign(ns, Infinity);
   std::vector<Index> source(ns, -1);
   using Entry = std::pair<double, Index>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
@@ -411,6 +418,81 @@ void OrientConsistently(std::vector<std::array<Index, 3>>& faces)
       }
     }
   }
+}
+// Folds: where the discrete medial axis had a fin on a wall, its triangles
+// land upside down on the wall's plane. The points of folded triangles
+// (neighbours across an edge of two that face opposite ways) move towards
+// the mean of their neighbours within their wall's plane (along the
+// planes' common line at a junction), a round at a time, until nothing is
+// folded or `rounds` are spent. Returns the folded edges left, and marks the
+// points moved.
+std::size_t UntangleFolds(std::vector<Point3>& points,
+  const std::vector<std::array<Index, 3>>& faces, const std::vector<PlaneSet>& planes, int rounds,
+  std::vector<std::uint8_t>& moved)
+{
+  moved.assign(planes.size(), 0);
+  std::map<std::array<Index, 2>, std::vector<Index>> edgeFaces;
+  std::vector<std::vector<Index>> neighbours(planes.size());
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
+      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(static_cast<Index>(f));
+      neighbours[a].push_back(b);
+      neighbours[b].push_back(a);
+    }
+  }
+  std::vector<std::array<Index, 2>> pairs;
+  for (const auto& entry : edgeFaces)
+  {
+    if (entry.second.size() == 2)
+    {
+      pairs.push_back({ entry.second[0], entry.second[1] });
+    }
+  }
+  std::size_t folded = 0;
+  for (int round = 0; round <= rounds; ++round)
+  {
+    std::vector<std::uint8_t> moving(planes.size(), 0);
+    folded = 0;
+    for (const auto& pair : pairs)
+    {
+      if (Dot(AreaNormal(points, faces[pair[0]]), AreaNormal(points, faces[pair[1]])) < 0.0)
+      {
+        ++folded;
+        for (Index f : pair)
+        {
+          for (Index v : faces[f])
+          {
+            moving[v] = 1;
+          }
+        }
+      }
+    }
+    if (folded == 0 || round == rounds)
+    {
+      break;
+    }
+    std::vector<Point3> next = points;
+    for (std::size_t v = 0; v < planes.size(); ++v)
+    {
+      if (!moving[v] || neighbours[v].empty())
+      {
+        continue;
+      }
+      Point3 mean{ 0, 0, 0 };
+      for (Index w : neighbours[v])
+      {
+        mean = mean + points[w];
+      }
+      mean = (1.0 / static_cast<double>(neighbours[v].size())) * mean;
+      next[v] = points[v] + planes[v].AlongAll(mean - points[v]);
+      moved[v] = 1;
+    }
+    points.swap(next);
+  }
+  return folded;
 }
 }
 
@@ -547,9 +629,11 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
 
   // Every other vertex (branches towards junctions and rims) onto the plane
   // of the nearest wall vertex of each of its sheets, where those planes meet.
+  std::vector<double> sourceDistance;
   const std::vector<Index> source =
-    NearestWallVertex(mesh, kept, structure.FaceSheet, states, isWall);
+    NearestWallVertex(mesh, kept, structure.FaceSheet, states, isWall, sourceDistance);
   std::vector<PlaneSet> planes(nv);
+  std::vector<std::uint8_t> unplaced(nv, 0);
   for (std::size_t v = 0; v < nv; ++v)
   {
     if (!used[v])
@@ -566,7 +650,11 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
     for (Index s = states.Offsets[v]; s < states.Offsets[v + 1]; ++s)
     {
       const Index w = source[s];
-      if (w >= 0)
+      if (w >= 0 && sourceDistance[s] > MaximumStraightening * thickness[w])
+      {
+        unplaced[v] = 1; // not a junction's branch: where a tube or a block joins the wall
+      }
+      else if (w >= 0)
       {
         planes[v].Add(position[w], wallNormal[w]);
         sum += thickness[w];
@@ -608,7 +696,8 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
   for (Index f : kept)
   {
     const auto& t = mesh.Faces[f];
-    if (!(Norm(AreaNormal(position, t)) > 1e-12 * scale * scale))
+    if (!(Norm(AreaNormal(position, t)) > 1e-12 * scale * scale) || unplaced[t[0]] ||
+      unplaced[t[1]] || unplaced[t[2]])
     {
       ++out.DroppedTriangles;
       continue;
@@ -637,6 +726,16 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
     {
       pointPlanes[pointOf[v]] = planes[v];
     }
+  }
+  std::vector<std::uint8_t> untangled;
+  out.FoldedEdges = UntangleFolds(out.Mesh.Points, faces, pointPlanes, FoldRounds, untangled);
+  for (std::size_t p = 0; p < medialPoints; ++p)
+  {
+    // A point moved along a tapered wall takes the thickness where it lands.
+    const auto chord = untangled[p] && pointPlanes[p].Normals.size() == 1
+      ? probe.Chord(out.Mesh.Points[p], Normalized(pointPlanes[p].Normals[0]), probeReach)
+      : WallProbe::ChordResult();
+    out.Thickness[p] = chord.Thickness > 0.0 ? chord.Thickness : out.Thickness[p];
   }
 
   // Free boundaries out along the mid-surface to the lateral faces.
@@ -761,12 +860,15 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
     }
     for (const auto& e : boundary)
     {
-      // The strip's triangles use the edge b -> a, as a neighbour must;
-      // flat ones (a boundary point that did not move) are left out.
+      // The strip's triangles use the edge b -> a, as a neighbour must.
       const Index a = e[0], b = e[1], ea = extended[a], eb = extended[b];
+      const Point3 faceNormal = AreaNormal(out.Mesh.Points, faces[e[2]]);
       const auto add = [&](const std::array<Index, 3>& t)
       {
-        if (Norm(AreaNormal(out.Mesh.Points, t)) > 1e-12 * scale * scale)
+        // Not flat, and not turned over (where the extensions of a convex
+        // corner's points cross).
+        const Point3 n = AreaNormal(out.Mesh.Points, t);
+        if (Norm(n) > 1e-12 * scale * scale && Dot(n, faceNormal) > 0.0)
         {
           faces.push_back(t);
         }

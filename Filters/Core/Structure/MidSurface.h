@@ -64,8 +64,13 @@ struct MidSurface
   /// the middle between the two sides by rays.
   std::size_t ExtendedPoints = 0;
   std::size_t CentredPoints = 0;
-  /// Triangles dropped because straightening turned them over or flat.
+  /// Triangles dropped because straightening made them flat or because a
+  /// vertex lies more than three wall thicknesses (along its sheet) from
+  /// any centred point (where a tube or a block joins a wall), and edges
+  /// whose two triangles still face opposite ways after untangling the
+  /// folds of the medial axis' fins.
   std::size_t DroppedTriangles = 0;
+  std::size_t FoldedEdges = 0;
 };
 
 /// `mesh` a valid medial mesh of the closed `surface`, `structure` its

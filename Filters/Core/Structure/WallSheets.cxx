@@ -114,7 +114,9 @@ WallSheets FindWallSheets(
     result.FaceTaper[f] = RadiusSlope(mesh.Centers[t[0]], mesh.Centers[t[1]], mesh.Centers[t[2]],
       mesh.Radii[t[0]], mesh.Radii[t[1]], mesh.Radii[t[2]]);
     result.FaceThickness[f] = 2.0 * (mesh.Radii[t[0]] + mesh.Radii[t[1]] + mesh.Radii[t[2]]) / 3.0;
-    result.FaceParallel[f] = result.FaceTaper[f] <= maximumSlope ? 1 : 0;
+    // Triangles of balls of radius 0 (fans along sharp edges) are no wall.
+    const bool thick = mesh.Radii[t[0]] > 0.0 && mesh.Radii[t[1]] > 0.0 && mesh.Radii[t[2]] > 0.0;
+    result.FaceParallel[f] = thick && result.FaceTaper[f] <= maximumSlope ? 1 : 0;
     area[f] = TriangleArea(mesh, t);
     parallelArea[f] = result.FaceParallel[f] ? area[f] : 0.0;
   }

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Regenerates the README's pictures in docs/images with the medial-axis tool:
-# the MAT of an organic model (the Stanford Bunny from ../shared/data/meshes)
-# and of a generated CAD-like part with its fillets highlighted.
+# Regenerates the pictures in docs/images with the medial-axis tool: the MAT
+# of an organic model (the Stanford Bunny from ../shared/data/meshes) and of
+# a generated CAD-like part with its fillets highlighted (README), and the
+# mid-surfaces of the thin-walled CAD meshes of ../shared/data/meshes
+# (docs/benchmark-results.md).
 #   scripts/make-pictures.sh
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -21,4 +23,8 @@ part=$(ls -t "$work"/part/*_prepared.vtp | head -n 1)
   "$work/cad"
 "$tool" --preset organic --quiet --screenshot "$images/organic-bunny.png" "$meshes/bunny.obj" \
   "$work/organic"
+for mesh in abc_00000125.obj abc_00000068.obj casting.off cup.off; do
+  "$tool" --preset cad --mid-surface --quiet --screenshot "$images/mid-surface-${mesh%.*}.png" \
+    "$meshes/$mesh" "$work/${mesh%.*}"
+done
 echo "pictures are in $images"

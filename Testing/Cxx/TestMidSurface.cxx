@@ -113,10 +113,7 @@ TEST(MidSurface, TPlateIsTwoWallsStitchedAtTheJunction)
       return std::min(plate, rib);
     };
     const MidSurfaceFigures f = Measure(part, deviation, Constant);
-    // Sharp: exact to rounding; filleted: a few points where the rib meets
-    // its fillets lean by up to 0.7% of t (their planes from the fillets'
-    // first triangles).
-    EXPECT_LE(f.MaximumDeviation, (fillet > 0.0 ? 0.01 : 0.005) * Wall);
+    EXPECT_LE(f.MaximumDeviation, 0.005 * Wall);
     EXPECT_LE(f.MaximumThicknessError, 0.01);
     const double area = Length * (Width + Height + 0.5 * Wall);
     EXPECT_NEAR(f.Area, area, 0.01 * area);
@@ -147,10 +144,9 @@ TEST(MidSurface, LBracketBendsRoundItsCorner)
       return std::min(plate, wall);
     };
     const MidSurfaceFigures f = Measure(part, deviation, Constant);
-    // The filleted bracket's arcs are tessellated: their triangles alone
-    // stand 0.18% of t off the true cylinders, and the points added on the
-    // lateral faces at the arcs' ends up to 0.62%.
-    EXPECT_LE(f.MaximumDeviation, (fillet > 0.0 ? 0.01 : 0.005) * Wall);
+    // (The filleted bracket's arcs are tessellated: their triangles alone
+    // stand 0.18% of t off the true cylinders.)
+    EXPECT_LE(f.MaximumDeviation, 0.005 * Wall);
     EXPECT_LE(f.MaximumThicknessError, 0.01);
     const double area = fillet > 0.0
       ? Length * (Width + Height - 2.0 * (Wall + fillet) + 0.5 * M_PI * (fillet + 0.5 * Wall))

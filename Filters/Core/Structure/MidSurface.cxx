@@ -101,16 +101,19 @@ struct WallProbe
   const TriangleLocator& Locator;
   const std::vector<Point3>& Normals; // per surface triangle, unit
   // Per surface triangle: the largest angle to a neighbour on the same
-  // smooth side (0 on a plane).
-  const std::vector<double>& FacetAngle;
+  // smooth side, positive where the side bulges out (convex), negative
+  // where it curves in (concave), 0 on a plane.
+  const std::vector<double>& FacetTurn;
 
-  // Two tessellated curved sides (concentric cylinders) meet a chord at
-  // angles that differ by up to a triangle's turn; a plane facing a curved
-  // side (a fillet's start) gets no such allowance.
+  // The two sides of a bent wall (concentric cylinders: one convex, one
+  // concave) meet a chord at angles that differ by up to a triangle's turn.
+  // A plane facing a curved side (a fillet's start) and two concave sides
+  // facing each other (the fillets at a rib's foot) get no such allowance.
   double SidesTolerance(Index a, Index b) const
   {
-    const double fa = this->FacetAngle[a], fb = this->FacetAngle[b];
-    return ChordSidesTolerance + (fa > 0.0 && fb > 0.0 ? std::max(fa, fb) : 0.0);
+    const double ta = this->FacetTurn[a], tb = this->FacetTurn[b];
+    const bool bent = ta * tb < 0.0;
+    return ChordSidesTolerance + (bent ? std::max(std::fabs(ta), std::fabs(tb)) : 0.0);
   }
 
   // The middle between the two sides near x, as MidSurfer's medial lines
@@ -542,22 +545,30 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
   // Vertices of one sheet between two parallel sides: moved to the middle
   // between them. Elsewhere (where a side turns into a fillet, a rib or a
   // corner) the vertex is straightened onto the wall's plane below.
-  std::vector<double> facetAngle(surface.Triangles.size(), 0.0);
+  std::vector<double> facetTurn(surface.Triangles.size(), 0.0);
   const TriangleAdjacency adjacency = ComputeTriangleAdjacency(surface, SmoothSideAngle);
-  for (std::size_t t = 0; t < facetAngle.size(); ++t)
+  const auto centroid = [&](Index t)
+  {
+    const Triangle& tri = surface.Triangles[t];
+    return (1.0 / 3.0) * (surface.Points[tri[0]] + surface.Points[tri[1]] + surface.Points[tri[2]]);
+  };
+  for (std::size_t t = 0; t < facetTurn.size(); ++t)
   {
     for (Index u : adjacency.Neighbour[t])
     {
       const double angle = u < 0
         ? M_PI
         : std::acos(std::max(-1.0, std::min(1.0, Dot(surfaceNormal[t], surfaceNormal[u]))));
-      if (angle < SmoothSideAngle)
+      if (angle < SmoothSideAngle && angle > std::fabs(facetTurn[t]))
       {
-        facetAngle[t] = std::max(facetAngle[t], angle);
+        // Convex where the neighbour falls below this triangle's plane.
+        const bool convex =
+          Dot(surfaceNormal[t], centroid(u) - centroid(static_cast<Index>(t))) < 0.0;
+        facetTurn[t] = convex ? angle : -angle;
       }
     }
   }
-  const WallProbe probe{ locator, surfaceNormal, facetAngle };
+  const WallProbe probe{ locator, surfaceNormal, facetTurn };
   const double probeReach = 1.5 * walls.WallThickness;
   std::vector<Point3> position = mesh.Centers;
   std::vector<double> thickness(nv);

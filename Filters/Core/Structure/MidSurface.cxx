@@ -46,6 +46,9 @@ const double LateralFaceSine = std::sin(60.0 * M_PI / 180.0);
 // about two. Farther, the sheet does not join two walls but a wall and
 // something else (a tube, a block), and its triangles are dropped.
 const double MaximumStraightening = 3.0;
+// A straightened point lies between these fractions of its thickness from
+// the surface (a half on a wall and at its junctions).
+const double MinimumClearance = 0.3, MaximumClearance = 1e9;
 // Rounds of untangling a fold may take.
 const int FoldRounds = 30;
 // Walls smaller than this share of the mid-surface are fragments.
@@ -497,6 +500,39 @@ std::size_t UntangleFolds(std::vector<Point3>& points,
   }
   return folded;
 }
+// Of each pair of triangles across an edge of two that face opposite ways,
+// the smaller (a fin's tip).
+std::vector<Index> FoldedTips(
+  const std::vector<Point3>& points, const std::vector<std::array<Index, 3>>& faces)
+{
+  std::map<std::array<Index, 2>, std::vector<Index>> edgeFaces;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
+      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(static_cast<Index>(f));
+    }
+  }
+  std::vector<Index> tips;
+  for (const auto& entry : edgeFaces)
+  {
+    const auto& around = entry.second;
+    if (around.size() != 2)
+    {
+      continue;
+    }
+    const Point3 n0 = AreaNormal(points, faces[around[0]]);
+    const Point3 n1 = AreaNormal(points, faces[around[1]]);
+    if (Dot(n0, n1) < 0.0)
+    {
+      tips.push_back(Norm(n0) < Norm(n1) ? around[0] : around[1]);
+    }
+  }
+  std::sort(tips.begin(), tips.end());
+  tips.erase(std::unique(tips.begin(), tips.end()), tips.end());
+  return tips;
+}
 }
 
 MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& structure,
@@ -694,6 +730,14 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
         thickness[v] = chord.Thickness;
       }
     }
+    // A wall's middle is half a thickness from the surface, at a junction
+    // too; a point much nearer (or farther) has been laid on a plane that
+    // is not its wall's (where a wall bends into a tube or a boss).
+    const double clearance = locator.Distance(position[v]) / (sum / count);
+    if (!(clearance >= MinimumClearance && clearance <= MaximumClearance))
+    {
+      unplaced[v] = 1;
+    }
   }
 
   // The kept faces on compact point ids, flat ones dropped.
@@ -739,7 +783,27 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
     }
   }
   std::vector<std::uint8_t> untangled;
-  out.FoldedEdges = UntangleFolds(out.Mesh.Points, faces, pointPlanes, FoldRounds, untangled);
+  if (UntangleFolds(out.Mesh.Points, faces, pointPlanes, FoldRounds, untangled) > 0)
+  {
+    // The tips of the folds left go; what is still folded is counted.
+    const std::vector<Index> tips = FoldedTips(out.Mesh.Points, faces);
+    std::vector<std::uint8_t> drop(faces.size(), 0);
+    for (Index f : tips)
+    {
+      drop[f] = 1;
+    }
+    std::size_t kept = 0;
+    for (std::size_t f = 0; f < faces.size(); ++f)
+    {
+      if (!drop[f])
+      {
+        faces[kept++] = faces[f];
+      }
+    }
+    faces.resize(kept);
+    out.DroppedTriangles += tips.size();
+    out.FoldedEdges = FoldedTips(out.Mesh.Points, faces).size();
+  }
   for (std::size_t p = 0; p < medialPoints; ++p)
   {
     // A point moved along a tapered wall takes the thickness where it lands.

@@ -64,11 +64,12 @@ struct MidSurface
   /// the middle between the two sides by rays.
   std::size_t ExtendedPoints = 0;
   std::size_t CentredPoints = 0;
-  /// Triangles dropped because straightening made them flat or because a
-  /// vertex lies more than three wall thicknesses (along its sheet) from
-  /// any centred point (where a tube or a block joins a wall), and edges
-  /// whose two triangles still face opposite ways after untangling the
-  /// folds of the medial axis' fins.
+  /// Triangles dropped: made flat by straightening; with a vertex more
+  /// than three wall thicknesses (along its sheet) from any centred point,
+  /// or straightened to less than 0.3 thickness from the surface (where a
+  /// wall bends into a tube or a block); the smaller of two triangles
+  /// still facing opposite ways after the folds of the medial axis' fins
+  /// are untangled. FoldedEdges: edges whose two triangles still do.
   std::size_t DroppedTriangles = 0;
   std::size_t FoldedEdges = 0;
 };

@@ -6,6 +6,7 @@
 #include "vtkStructuralMedialAxis.h"
 #include "vtkSurfacePreparation.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
@@ -88,6 +89,16 @@ int vtkMidSurfaceExtractor::RequestData(
     copy->ShallowCopy(surfaceIn);
     computed->SetInputData(copy);
     computed->SetPresetToCAD();
+    // Its progress is the first half of this filter's.
+    vtkNew<vtkCallbackCommand> progress;
+    progress->SetClientData(this);
+    progress->SetCallback(
+      [](vtkObject*, unsigned long, void* self, void* amount)
+      {
+        static_cast<vtkMidSurfaceExtractor*>(self)->UpdateProgress(
+          0.5 * *static_cast<double*>(amount));
+      });
+    computed->AddObserver(vtkCommand::ProgressEvent, progress);
     computed->Update();
     medialIn = computed->GetOutput();
     if (medialIn->GetNumberOfPoints() == 0)

@@ -187,15 +187,29 @@ TEST(MidSurface, NoWallsWhereNothingIsThin)
   count->SetCallback(
     [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
 
+  // Progress through the medial axis it computes, to the end.
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> record;
+  record->SetClientData(&progress);
+  record->SetCallback([](vtkObject*, unsigned long, void* data, void* amount)
+    { static_cast<std::vector<double>*>(data)->push_back(*static_cast<double*>(amount)); });
+
   vtkNew<vtkAnalyticShapeSource> box;
   box->SetShapeToBox();
   vtkNew<vtkMidSurfaceExtractor> mid;
   mid->AddObserver(vtkCommand::WarningEvent, count);
+  mid->AddObserver(vtkCommand::ProgressEvent, record);
   mid->SetInputConnection(box->GetOutputPort());
   mid->Update();
   EXPECT_EQ(mid->GetOutput()->GetNumberOfCells(), 0);
   EXPECT_EQ(mid->GetNumberOfWallSheets(), 0);
   EXPECT_EQ(warnings, 1);
+  ASSERT_GT(progress.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_GT(
+    std::count_if(progress.begin(), progress.end(), [](double p) { return p > 0.0 && p < 0.5; }),
+    0);
+  EXPECT_EQ(progress.back(), 1.0);
 
   auto part = Part(vtkAnalyticShapeSource::T_PLATE, 0.0);
   mid->SetInputConnection(part->GetOutputPort());

@@ -58,7 +58,7 @@ if args.structure:
     # components, MATFP's cross-check of the types.
     shown = MedialStructure(Input=OutputPort(mat, 0), Cells=OutputPort(mat, 1))
 elif args.mid_surface:
-    shown = MidSurfaceExtractor(Input=surface, MedialAxis=OutputPort(mat, 0))
+    shown = MidSurface(Input=surface, MedialAxis=OutputPort(mat, 0))
 axis = Show(shown, view)
 axis.Representation = "Surface With Edges"
 axis.EdgeColor = [0.15, 0.15, 0.15]

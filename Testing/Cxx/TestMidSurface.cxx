@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace
@@ -95,6 +96,26 @@ double Constant(const double*)
 {
   return Wall;
 }
+
+// The warnings or errors an object reports: how many, and the last text.
+struct Messages
+{
+  int Count = 0;
+  std::string Last;
+  vtkNew<vtkCallbackCommand> Command;
+  Messages(vtkObject* object, unsigned long event)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback(
+      [](vtkObject*, unsigned long, void* self, void* text)
+      {
+        auto* messages = static_cast<Messages*>(self);
+        ++messages->Count;
+        messages->Last = text ? static_cast<const char*>(text) : "";
+      });
+    object->AddObserver(event, this->Command);
+  }
+};
 }
 
 // The plate's mid-plane z = 0 across its whole width and the rib's y = 0
@@ -181,12 +202,6 @@ TEST(MidSurface, WedgePlateThicknessFollowsTheTaper)
 // an error); so does a wall thicker than the WallThickness the user sets.
 TEST(MidSurface, NoWallsWhereNothingIsThin)
 {
-  int warnings = 0;
-  vtkNew<vtkCallbackCommand> count;
-  count->SetClientData(&warnings);
-  count->SetCallback(
-    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
-
   // Progress through the medial axis it computes, to the end.
   std::vector<double> progress;
   vtkNew<vtkCallbackCommand> record;
@@ -197,13 +212,13 @@ TEST(MidSurface, NoWallsWhereNothingIsThin)
   vtkNew<vtkAnalyticShapeSource> box;
   box->SetShapeToBox();
   vtkNew<vtkMidSurfaceExtractor> mid;
-  mid->AddObserver(vtkCommand::WarningEvent, count);
+  const Messages warnings(mid, vtkCommand::WarningEvent);
   mid->AddObserver(vtkCommand::ProgressEvent, record);
   mid->SetInputConnection(box->GetOutputPort());
   mid->Update();
   EXPECT_EQ(mid->GetOutput()->GetNumberOfCells(), 0);
   EXPECT_EQ(mid->GetNumberOfWallSheets(), 0);
-  EXPECT_EQ(warnings, 1);
+  EXPECT_EQ(warnings.Count, 1);
   ASSERT_GT(progress.size(), 3u);
   EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
   EXPECT_GT(
@@ -216,7 +231,7 @@ TEST(MidSurface, NoWallsWhereNothingIsThin)
   mid->SetWallThickness(0.5 * Wall);
   mid->Update();
   EXPECT_EQ(mid->GetOutput()->GetNumberOfCells(), 0);
-  EXPECT_EQ(warnings, 2);
+  EXPECT_EQ(warnings.Count, 2);
   mid->SetWallThickness(2.0 * Wall);
   mid->Update();
   EXPECT_EQ(mid->GetNumberOfWalls(), 2);
@@ -226,18 +241,14 @@ TEST(MidSurface, NoWallsWhereNothingIsThin)
 // A medial mesh without radii is refused with an error naming it.
 TEST(MidSurface, MedialMeshWithoutRadiusIsRefused)
 {
-  int errors = 0;
-  vtkNew<vtkCallbackCommand> count;
-  count->SetClientData(&errors);
-  count->SetCallback(
-    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
   auto part = Part(vtkAnalyticShapeSource::T_PLATE, 0.0);
   vtkNew<vtkMidSurfaceExtractor> mid;
-  mid->AddObserver(vtkCommand::ErrorEvent, count);
+  const Messages errors(mid, vtkCommand::ErrorEvent);
   mid->SetInputConnection(0, part->GetOutputPort());
   mid->SetMedialAxisConnection(part->GetOutputPort()); // a surface, no radii
   mid->Update();
-  EXPECT_EQ(errors, 1);
+  EXPECT_EQ(errors.Count, 1);
+  EXPECT_NE(errors.Last.find("Radius"), std::string::npos) << errors.Last;
   EXPECT_EQ(mid->GetOutput()->GetNumberOfCells(), 0);
 }
 

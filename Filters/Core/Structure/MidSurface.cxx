@@ -61,6 +61,23 @@ Point3 AreaNormal(const std::vector<Point3>& points, const std::array<Index, 3>&
   return Cross(points[t[1]] - points[t[0]], points[t[2]] - points[t[0]]);
 }
 
+using EdgeFaceMap = std::map<std::array<Index, 2>, std::vector<Index>>;
+
+// The faces on each edge (a, b), a < b.
+EdgeFaceMap EdgeFaces(const std::vector<std::array<Index, 3>>& faces)
+{
+  EdgeFaceMap edgeFaces;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
+      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(static_cast<Index>(f));
+    }
+  }
+  return edgeFaces;
+}
+
 // Slivers (height under 5% of their longest edge) tilt with the last digits
 // of their points: their normals say nothing.
 bool IsSliver(const std::vector<Point3>& points, const std::array<Index, 3>& t)
@@ -369,15 +386,7 @@ std::vector<Index> NearestWallVertex(const MedialMesh& mesh, const std::vector<I
 // orientation per orientable piece).
 void OrientConsistently(std::vector<std::array<Index, 3>>& faces)
 {
-  std::map<std::array<Index, 2>, std::vector<Index>> edgeFaces;
-  for (std::size_t f = 0; f < faces.size(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
-      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(static_cast<Index>(f));
-    }
-  }
+  EdgeFaceMap edgeFaces = EdgeFaces(faces);
   auto uses = [&](Index f, Index a, Index b)
   {
     for (int k = 0; k < 3; ++k)
@@ -437,17 +446,12 @@ std::size_t UntangleFolds(std::vector<Point3>& points,
   std::vector<std::uint8_t>& moved)
 {
   moved.assign(planes.size(), 0);
-  std::map<std::array<Index, 2>, std::vector<Index>> edgeFaces;
+  const EdgeFaceMap edgeFaces = EdgeFaces(faces);
   std::vector<std::vector<Index>> neighbours(planes.size());
-  for (std::size_t f = 0; f < faces.size(); ++f)
+  for (const auto& entry : edgeFaces)
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
-      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(static_cast<Index>(f));
-      neighbours[a].push_back(b);
-      neighbours[b].push_back(a);
-    }
+    neighbours[entry.first[0]].push_back(entry.first[1]);
+    neighbours[entry.first[1]].push_back(entry.first[0]);
   }
   std::vector<std::array<Index, 2>> pairs;
   for (const auto& entry : edgeFaces)
@@ -505,17 +509,8 @@ std::size_t UntangleFolds(std::vector<Point3>& points,
 std::vector<Index> FoldedTips(
   const std::vector<Point3>& points, const std::vector<std::array<Index, 3>>& faces)
 {
-  std::map<std::array<Index, 2>, std::vector<Index>> edgeFaces;
-  for (std::size_t f = 0; f < faces.size(); ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
-      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(static_cast<Index>(f));
-    }
-  }
   std::vector<Index> tips;
-  for (const auto& entry : edgeFaces)
+  for (const auto& entry : EdgeFaces(faces))
   {
     const auto& around = entry.second;
     if (around.size() != 2)
@@ -814,14 +809,7 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
   }
 
   // Free boundaries out along the mid-surface to the lateral faces.
-  std::map<std::array<Index, 2>, int> edgeUses;
-  for (const auto& t : faces)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      ++edgeUses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
-    }
-  }
+  const EdgeFaceMap edgeUses = EdgeFaces(faces);
   std::vector<std::array<Index, 3>> boundary; // a, b as in the face, then the face
   for (std::size_t f = 0; f < faces.size(); ++f)
   {
@@ -829,7 +817,7 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
     for (int k = 0; k < 3; ++k)
     {
       const Index a = t[k], b = t[(k + 1) % 3];
-      if (edgeUses[{ std::min(a, b), std::max(a, b) }] == 1)
+      if (edgeUses.at({ std::min(a, b), std::max(a, b) }).size() == 1)
       {
         boundary.push_back({ a, b, static_cast<Index>(f) });
       }
@@ -966,18 +954,13 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
 
   // Walls: triangles joined where the surface bends gently, and at
   // junctions where one continues another's plane.
-  std::map<std::array<Index, 2>, std::vector<Index>> edgeFaces;
+  EdgeFaceMap edgeFaces = EdgeFaces(faces);
   std::vector<Point3> unit(faces.size());
   std::vector<std::uint8_t> sliver(faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f)
   {
     unit[f] = Normalized(AreaNormal(out.Mesh.Points, faces[f]));
     sliver[f] = IsSliver(out.Mesh.Points, faces[f]);
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index a = faces[f][k], b = faces[f][(k + 1) % 3];
-      edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(static_cast<Index>(f));
-    }
   }
   DisjointSets wallSets(faces.size());
   for (const auto& [edge, around] : edgeFaces)

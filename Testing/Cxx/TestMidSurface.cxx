@@ -2,7 +2,10 @@
 // vtkMidSurfaceExtractor on thin-walled parts whose mid-surfaces are known
 // exactly (vtkAnalyticShapeSource's T-plate, L-bracket and wedge plate),
 // and the wall selection's rules in Core.
+#include "Geometry/Vec3.h"
 #include "Structure/WallSheets.h"
+#include "Surface/AnalyticShapes.h"
+#include "TestHelpers.h"
 #include "vtkAnalyticShapeSource.h"
 #include "vtkMidSurfaceExtractor.h"
 
@@ -196,6 +199,59 @@ TEST(MidSurface, WedgePlateThicknessFollowsTheTaper)
   EXPECT_EQ(f.JunctionEdges, 0);
   EXPECT_EQ(f.Pieces, 1);
   EXPECT_EQ(f.FoldedEdges, 0.0);
+}
+
+// A hollow ball (walls curved both ways, one side convex, the other
+// concave): one closed wall, the sphere halfway between the shells.
+TEST(MidSurface, HollowBallIsTheMiddleSphere)
+{
+  const double outer = 0.5, inner = 0.4, middle = 0.45, thickness = outer - inner;
+  using namespace medialaxis;
+  const TriangleMesh outerShell = MakeSphere(outer, 24), innerShell = MakeSphere(inner, 24);
+  // How far the shells' triangles stand inside their spheres (at their
+  // centroids): the tessellation's share of the error.
+  const auto sag = [](const TriangleMesh& shell, double radius)
+  {
+    double deepest = 0.0;
+    for (const auto& t : shell.Triangles)
+    {
+      const Point3 c = (1.0 / 3.0) * (shell.Points[t[0]] + shell.Points[t[1]] + shell.Points[t[2]]);
+      deepest = std::max(deepest, radius - Norm(c));
+    }
+    return deepest;
+  };
+  const double tessellation = 0.5 * (sag(outerShell, outer) + sag(innerShell, inner));
+  const auto shells = test::ToPolyData(test::Append(outerShell, innerShell));
+  vtkNew<vtkMidSurfaceExtractor> mid;
+  mid->SetInputData(shells);
+  mid->Update();
+  vtkPolyData* out = mid->GetOutput();
+  ASSERT_GT(out->GetNumberOfPoints(), 0);
+  vtkDataArray* t = out->GetPointData()->GetArray("Thickness");
+  vtkDataArray* types = out->GetPointData()->GetArray("PointType");
+  double deviation = 0.0, thicknessError = 0.0;
+  int worstType = -1;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    const double d = std::fabs(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - middle);
+    if (d > deviation)
+    {
+      deviation = d;
+      worstType = static_cast<int>(types->GetComponent(i, 0));
+    }
+    thicknessError = std::max(thicknessError, std::fabs(t->GetComponent(i, 0) / thickness - 1.0));
+  }
+  EXPECT_LE(deviation, tessellation + 0.005 * thickness)
+    << "tessellation " << tessellation << ", point type " << worstType;
+  EXPECT_LE(thicknessError, 0.01);
+  EXPECT_EQ(mid->GetNumberOfWalls(), 1);
+  vtkNew<vtkMassProperties> mass;
+  mass->SetInputData(out);
+  mass->Update();
+  const double area = 4.0 * M_PI * middle * middle;
+  EXPECT_NEAR(mass->GetSurfaceArea(), area, 0.01 * area);
 }
 
 // A part without thin walls gives an empty mid-surface (and a warning, not

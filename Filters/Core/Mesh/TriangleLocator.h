@@ -75,6 +75,26 @@ public:
     return best;
   }
 
+  /// Calls visit(t) for every triangle t within `radius` of p.
+  template <typename Visit>
+  void ForEachWithin(const Point3& p, double radius, Visit&& visit) const
+  {
+    const double radius2 = radius * radius;
+    this->Tree.Search([&](const BoxTree::Node& n) { return SquaredDistanceToBox(p, n.Bounds); },
+      [&](std::uint32_t t)
+      {
+        const Triangle& tri = this->Mesh.Triangles[t];
+        if (Distance2(p,
+              ClosestPointOnTriangle(p, this->Mesh.Points[tri[0]], this->Mesh.Points[tri[1]],
+                this->Mesh.Points[tri[2]])) <= radius2)
+        {
+          visit(static_cast<Index>(t));
+        }
+        return false;
+      },
+      std::nextafter(radius2, std::numeric_limits<double>::infinity()));
+  }
+
   struct RayHit
   {
     double Distance = std::numeric_limits<double>::infinity(); // along the unit direction

@@ -154,13 +154,36 @@ struct WallProbe
     {
       return false;
     }
-    // Across from the nearest point towards x: the side's normal inside a
-    // triangle, and between its normals on an edge or a corner of a
-    // tessellated curved side.
-    const Point3 inward = Normalized(x - near.Point);
+    // Across from the nearest point: the side's normal inside a triangle;
+    // on an edge or a corner of a tessellated curved side, the mean normal
+    // of the facing triangles there (the direction towards x would carry
+    // the medial axis' noise into the chord's tilt).
     if (!(Norm(x - near.Point) > 1e-9 * reach))
     {
       return false;
+    }
+    const Point3 towards = Normalized(x - near.Point);
+    Point3 inward = towards;
+    if (std::fabs(Dot(towards, this->Normals[near.Triangle])) < std::cos(1e-3))
+    {
+      Point3 sum{ 0, 0, 0 };
+      this->Locator.ForEachWithin(near.Point, 1e-9 * reach,
+        [&](Index t)
+        {
+          if (std::fabs(Dot(this->Normals[t], normal)) >= SideFacingCosine)
+          {
+            sum = sum + (Dot(this->Normals[t], towards) < 0.0 ? -1.0 : 1.0) * this->Normals[t];
+          }
+        });
+      inward = Norm(sum) > 0.0 ? Normalized(sum) : towards;
+    }
+    else if (Dot(this->Normals[near.Triangle], towards) < 0.0)
+    {
+      inward = -1.0 * this->Normals[near.Triangle];
+    }
+    else
+    {
+      inward = this->Normals[near.Triangle];
     }
     const auto across =
       this->Locator.FirstHit(near.Point, inward, 1e-9 * reach, reach, near.Triangle);
@@ -801,11 +824,26 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
   }
   for (std::size_t p = 0; p < medialPoints; ++p)
   {
-    // A point moved along a tapered wall takes the thickness where it lands.
-    const auto chord = untangled[p] && pointPlanes[p].Normals.size() == 1
-      ? probe.Chord(out.Mesh.Points[p], Normalized(pointPlanes[p].Normals[0]), probeReach)
-      : WallProbe::ChordResult();
-    out.Thickness[p] = chord.Thickness > 0.0 ? chord.Thickness : out.Thickness[p];
+    // A point moved within its wall's tangent plane is centred again where
+    // it landed: a curved wall falls away from the plane, and a tapered
+    // wall's thickness changes along it.
+    if (!untangled[p] || pointPlanes[p].Normals.size() != 1)
+    {
+      continue;
+    }
+    const Point3 n = Normalized(pointPlanes[p].Normals[0]);
+    Point3 middle;
+    double across = 0.0;
+    if (probe.Centre(out.Mesh.Points[p], n, probeReach, middle, across))
+    {
+      out.Mesh.Points[p] = middle;
+      out.Thickness[p] = across;
+    }
+    else
+    {
+      const auto chord = probe.Chord(out.Mesh.Points[p], n, probeReach);
+      out.Thickness[p] = chord.Thickness > 0.0 ? chord.Thickness : out.Thickness[p];
+    }
   }
 
   // Free boundaries out along the mid-surface to the lateral faces.

@@ -8,8 +8,10 @@
 #include "TestHelpers.h"
 #include "vtkAnalyticShapeSource.h"
 #include "vtkMidSurfaceExtractor.h"
+#include "vtkStructuralMedialAxis.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -292,6 +294,45 @@ TEST(MidSurface, NoWallsWhereNothingIsThin)
   mid->Update();
   EXPECT_EQ(mid->GetNumberOfWalls(), 2);
   EXPECT_DOUBLE_EQ(mid->GetEstimatedWallThickness(), 2.0 * Wall);
+}
+
+// The same part and medial-axis settings give the same mid-surface, bit for
+// bit, at any thread count.
+TEST(MidSurface, SameResultAtAnyThreadCount)
+{
+  auto part = Part(vtkAnalyticShapeSource::T_PLATE, 0.1);
+  std::vector<std::vector<double>> results;
+  for (int threads : { 1, 2 })
+  {
+    vtkNew<vtkStructuralMedialAxis> mat;
+    mat->SetInputConnection(part->GetOutputPort());
+    mat->SetPresetToCAD();
+    mat->SetNumberOfSamples(20000);
+    mat->SetTargetNumberOfVertices(2000);
+    mat->SetNumberOfThreads(threads);
+    vtkNew<vtkMidSurfaceExtractor> mid;
+    mid->SetInputConnection(0, part->GetOutputPort());
+    mid->SetMedialAxisConnection(mat->GetOutputPort(0));
+    mid->Update();
+    vtkPolyData* out = mid->GetOutput();
+    std::vector<double> values;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      out->GetPoint(i, p);
+      values.insert(values.end(), p, p + 3);
+      values.push_back(out->GetPointData()->GetArray("Thickness")->GetComponent(i, 0));
+    }
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    for (out->GetPolys()->InitTraversal(); out->GetPolys()->GetNextCell(n, ids);)
+    {
+      values.insert(values.end(), ids, ids + n);
+    }
+    results.push_back(values);
+  }
+  ASSERT_FALSE(results[0].empty());
+  EXPECT_EQ(results[0], results[1]);
 }
 
 // A medial mesh without radii is refused with an error naming it.

@@ -80,6 +80,18 @@ void AddFieldDouble(vtkPolyData* output, const char* name, double value)
   output->GetFieldData()->AddArray(a);
 }
 
+void AddFieldArray(vtkPolyData* output, const char* name, const std::vector<double>& values)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    a->SetValue(static_cast<vtkIdType>(i), values[i]);
+  }
+  output->GetFieldData()->AddArray(a);
+}
+
 void AddAtlasArrays(
   vtkPolyData* output, const std::vector<Index>& offsets, const std::vector<Index>& sites)
 {

@@ -56,6 +56,22 @@ void AddFieldValue(vtkPolyData* output, const char* name, long long value);
 /// Adds a one-value double field-data array (a measured quantity).
 void AddFieldDouble(vtkPolyData* output, const char* name, double value);
 
+/// Adds a double field-data array of the given values (one per sheet, wall...).
+void AddFieldArray(vtkPolyData* output, const char* name, const std::vector<double>& values);
+
+/// Adds a double field-data array with one tuple per item: `get(item)`.
+template <typename Item, typename Get>
+void AddFieldPerItem(vtkPolyData* output, const char* name, const std::vector<Item>& items, Get get)
+{
+  std::vector<double> values;
+  values.reserve(items.size());
+  for (const Item& item : items)
+  {
+    values.push_back(static_cast<double>(get(item)));
+  }
+  AddFieldArray(output, name, values);
+}
+
 /// The shared validity check for medial meshes given as poly data.
 inline std::string ValidateMedialPolyData(vtkPolyData* input)
 {

@@ -145,19 +145,6 @@ std::string ReadTangentComponents(vtkPolyData* mat, vtkPolyData* rvd, std::vecto
   count = medialaxis::CountTangentComponents(atlasOffsets, atlasSites, adjacency);
   return "";
 }
-
-void AddSheetArray(vtkFieldData* fd, const char* name,
-  const std::vector<medialaxis::MedialSheet>& sheets, double (*get)(const medialaxis::MedialSheet&))
-{
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->SetNumberOfTuples(static_cast<vtkIdType>(sheets.size()));
-  for (std::size_t s = 0; s < sheets.size(); ++s)
-  {
-    a->SetValue(static_cast<vtkIdType>(s), get(sheets[s]));
-  }
-  fd->AddArray(a);
-}
 }
 
 vtkMedialStructure::vtkMedialStructure()
@@ -261,14 +248,15 @@ int vtkMedialStructure::RequestData(
   fields->DeepCopy(input->GetFieldData());
   output->SetFieldData(fields);
   using Sheet = medialaxis::MedialSheet;
-  AddSheetArray(fields, "SheetArea", s.Sheets, [](const Sheet& x) { return x.Area; });
-  AddSheetArray(fields, "SheetMeanRadius", s.Sheets, [](const Sheet& x) { return x.MeanRadius; });
-  AddSheetArray(
-    fields, "SheetMinimumRadius", s.Sheets, [](const Sheet& x) { return x.MinimumRadius; });
-  AddSheetArray(
-    fields, "SheetMaximumRadius", s.Sheets, [](const Sheet& x) { return x.MaximumRadius; });
-  AddSheetArray(fields, "SheetTriangles", s.Sheets,
-    [](const Sheet& x) { return static_cast<double>(x.Triangles); });
+  medialaxis::AddFieldPerItem(output, "SheetArea", s.Sheets, [](const Sheet& x) { return x.Area; });
+  medialaxis::AddFieldPerItem(
+    output, "SheetMeanRadius", s.Sheets, [](const Sheet& x) { return x.MeanRadius; });
+  medialaxis::AddFieldPerItem(
+    output, "SheetMinimumRadius", s.Sheets, [](const Sheet& x) { return x.MinimumRadius; });
+  medialaxis::AddFieldPerItem(
+    output, "SheetMaximumRadius", s.Sheets, [](const Sheet& x) { return x.MaximumRadius; });
+  medialaxis::AddFieldPerItem(
+    output, "SheetTriangles", s.Sheets, [](const Sheet& x) { return x.Triangles; });
   if (!components.empty())
   {
     medialaxis::AddFieldValue(output, "TypeDisagreements", static_cast<long long>(s.Disagreements));

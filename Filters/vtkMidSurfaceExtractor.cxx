@@ -25,30 +25,6 @@
 
 vtkStandardNewMacro(vtkMidSurfaceExtractor);
 
-namespace
-{
-vtkNew<vtkDoubleArray> NamedArray(const char* name, vtkIdType tuples)
-{
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->SetNumberOfTuples(tuples);
-  return a;
-}
-
-// Field data with one tuple per wall.
-void AddWallArray(vtkFieldData* fields, const char* name,
-  const std::vector<medialaxis::MidSurfaceWall>& walls,
-  double (*get)(const medialaxis::MidSurfaceWall&))
-{
-  auto a = NamedArray(name, static_cast<vtkIdType>(walls.size()));
-  for (std::size_t w = 0; w < walls.size(); ++w)
-  {
-    a->SetValue(static_cast<vtkIdType>(w), get(walls[w]));
-  }
-  fields->AddArray(a);
-}
-}
-
 vtkMidSurfaceExtractor::vtkMidSurfaceExtractor()
 {
   this->SetNumberOfInputPorts(2);
@@ -138,7 +114,9 @@ int vtkMidSurfaceExtractor::RequestData(
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(mid.Mesh.Points.size()));
-  auto thickness = NamedArray("Thickness", points->GetNumberOfPoints());
+  vtkNew<vtkDoubleArray> thickness;
+  thickness->SetName("Thickness");
+  thickness->SetNumberOfTuples(points->GetNumberOfPoints());
   vtkNew<vtkIdTypeArray> source;
   source->SetName("MedialVertexId");
   source->SetNumberOfTuples(points->GetNumberOfPoints());
@@ -170,14 +148,13 @@ int vtkMidSurfaceExtractor::RequestData(
   output->GetPointData()->AddArray(pointType);
   output->GetCellData()->AddArray(wallIds);
   using Wall = medialaxis::MidSurfaceWall;
-  vtkFieldData* fields = output->GetFieldData();
-  AddWallArray(fields, "WallArea", mid.Walls, [](const Wall& w) { return w.Area; });
-  AddWallArray(
-    fields, "WallMeanThickness", mid.Walls, [](const Wall& w) { return w.MeanThickness; });
-  AddWallArray(
-    fields, "WallMinimumThickness", mid.Walls, [](const Wall& w) { return w.MinimumThickness; });
-  AddWallArray(
-    fields, "WallMaximumThickness", mid.Walls, [](const Wall& w) { return w.MaximumThickness; });
+  medialaxis::AddFieldPerItem(output, "WallArea", mid.Walls, [](const Wall& w) { return w.Area; });
+  medialaxis::AddFieldPerItem(
+    output, "WallMeanThickness", mid.Walls, [](const Wall& w) { return w.MeanThickness; });
+  medialaxis::AddFieldPerItem(
+    output, "WallMinimumThickness", mid.Walls, [](const Wall& w) { return w.MinimumThickness; });
+  medialaxis::AddFieldPerItem(
+    output, "WallMaximumThickness", mid.Walls, [](const Wall& w) { return w.MaximumThickness; });
 
   this->EstimatedWallThickness = mid.WallThickness;
   this->NumberOfWalls = static_cast<vtkIdType>(mid.Walls.size());

@@ -46,9 +46,9 @@ const double LateralFaceSine = std::sin(60.0 * M_PI / 180.0);
 // about two. Farther, the sheet does not join two walls but a wall and
 // something else (a tube, a block), and its triangles are dropped.
 const double MaximumStraightening = 3.0;
-// A straightened point lies between these fractions of its thickness from
+// A straightened point lies at least this fraction of its thickness from
 // the surface (a half on a wall and at its junctions).
-const double MinimumClearance = 0.3, MaximumClearance = 1e9;
+const double MinimumClearance = 0.3;
 // Rounds of untangling a fold may take.
 const int FoldRounds = 30;
 // Walls smaller than this share of the mid-surface are fragments.
@@ -457,6 +457,33 @@ void OrientConsistently(std::vector<std::array<Index, 3>>& faces)
     }
   }
 }
+// The pairs of triangles across an edge of two.
+std::vector<std::array<Index, 2>> TwoFacePairs(const EdgeFaceMap& edgeFaces)
+{
+  std::vector<std::array<Index, 2>> pairs;
+  for (const auto& entry : edgeFaces)
+  {
+    if (entry.second.size() == 2)
+    {
+      pairs.push_back({ entry.second[0], entry.second[1] });
+    }
+  }
+  return pairs;
+}
+// Of those pairs, the ones whose triangles face opposite ways (a fold).
+std::vector<std::array<Index, 2>> FoldedPairs(const std::vector<Point3>& points,
+  const std::vector<std::array<Index, 3>>& faces, const std::vector<std::array<Index, 2>>& pairs)
+{
+  std::vector<std::array<Index, 2>> folded;
+  for (const auto& pair : pairs)
+  {
+    if (Dot(AreaNormal(points, faces[pair[0]]), AreaNormal(points, faces[pair[1]])) < 0.0)
+    {
+      folded.push_back(pair);
+    }
+  }
+  return folded;
+}
 // Folds: where the discrete medial axis had a fin on a wall, its triangles
 // land upside down on the wall's plane. The points of folded triangles
 // (neighbours across an edge of two that face opposite ways) move towards
@@ -476,30 +503,20 @@ std::size_t UntangleFolds(std::vector<Point3>& points,
     neighbours[entry.first[0]].push_back(entry.first[1]);
     neighbours[entry.first[1]].push_back(entry.first[0]);
   }
-  std::vector<std::array<Index, 2>> pairs;
-  for (const auto& entry : edgeFaces)
-  {
-    if (entry.second.size() == 2)
-    {
-      pairs.push_back({ entry.second[0], entry.second[1] });
-    }
-  }
+  const std::vector<std::array<Index, 2>> pairs = TwoFacePairs(edgeFaces);
   std::size_t folded = 0;
   for (int round = 0; round <= rounds; ++round)
   {
     std::vector<std::uint8_t> moving(planes.size(), 0);
-    folded = 0;
-    for (const auto& pair : pairs)
+    const std::vector<std::array<Index, 2>> foldedPairs = FoldedPairs(points, faces, pairs);
+    folded = foldedPairs.size();
+    for (const auto& pair : foldedPairs)
     {
-      if (Dot(AreaNormal(points, faces[pair[0]]), AreaNormal(points, faces[pair[1]])) < 0.0)
+      for (Index f : pair)
       {
-        ++folded;
-        for (Index f : pair)
+        for (Index v : faces[f])
         {
-          for (Index v : faces[f])
-          {
-            moving[v] = 1;
-          }
+          moving[v] = 1;
         }
       }
     }
@@ -533,19 +550,11 @@ std::vector<Index> FoldedTips(
   const std::vector<Point3>& points, const std::vector<std::array<Index, 3>>& faces)
 {
   std::vector<Index> tips;
-  for (const auto& entry : EdgeFaces(faces))
+  for (const auto& pair : FoldedPairs(points, faces, TwoFacePairs(EdgeFaces(faces))))
   {
-    const auto& around = entry.second;
-    if (around.size() != 2)
-    {
-      continue;
-    }
-    const Point3 n0 = AreaNormal(points, faces[around[0]]);
-    const Point3 n1 = AreaNormal(points, faces[around[1]]);
-    if (Dot(n0, n1) < 0.0)
-    {
-      tips.push_back(Norm(n0) < Norm(n1) ? around[0] : around[1]);
-    }
+    const double area0 = Norm(AreaNormal(points, faces[pair[0]]));
+    const double area1 = Norm(AreaNormal(points, faces[pair[1]]));
+    tips.push_back(area0 < area1 ? pair[0] : pair[1]);
   }
   std::sort(tips.begin(), tips.end());
   tips.erase(std::unique(tips.begin(), tips.end()), tips.end());
@@ -578,7 +587,7 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
   std::vector<Point3> surfaceNormal(surface.Triangles.size());
   for (std::size_t t = 0; t < surface.Triangles.size(); ++t)
   {
-    surfaceNormal[t] = Normalized(AreaNormal(surface.Points, surface.Triangles[t]));
+    surfaceNormal[t] = TriangleNormal(surface, static_cast<Index>(t));
   }
   const SheetStates states = MakeSheetStates(mesh, kept, structure.FaceSheet);
 
@@ -749,10 +758,10 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
       }
     }
     // A wall's middle is half a thickness from the surface, at a junction
-    // too; a point much nearer (or farther) has been laid on a plane that
-    // is not its wall's (where a wall bends into a tube or a boss).
+    // too; a point much nearer has been laid on a plane that is not its
+    // wall's (where a wall bends into a tube or a boss).
     const double clearance = locator.Distance(position[v]) / (sum / count);
-    if (!(clearance >= MinimumClearance && clearance <= MaximumClearance))
+    if (!(clearance >= MinimumClearance))
     {
       unplaced[v] = 1;
     }

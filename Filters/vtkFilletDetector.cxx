@@ -13,6 +13,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -63,6 +64,7 @@ void CentreLinesToPolyData(const medialaxis::FilletDetectionResult& result, vtkP
   auto variation = NamedDoubles("RadiusVariation");
   auto length = NamedDoubles("Length");
   auto area = NamedDoubles("SurfaceArea");
+  auto arc = NamedDoubles("ArcAngle");
   for (std::size_t f = 0; f < result.Fillets.size(); ++f)
   {
     const medialaxis::Fillet& fillet = result.Fillets[f];
@@ -90,6 +92,7 @@ void CentreLinesToPolyData(const medialaxis::FilletDetectionResult& result, vtkP
     variation->InsertNextValue(fillet.RadiusVariation);
     length->InsertNextValue(fillet.Length);
     area->InsertNextValue(fillet.SurfaceArea);
+    arc->InsertNextValue(vtkMath::DegreesFromRadians(fillet.ArcAngle));
   }
   output->SetPoints(points);
   output->SetLines(lines);
@@ -97,7 +100,7 @@ void CentreLinesToPolyData(const medialaxis::FilletDetectionResult& result, vtkP
   output->GetPointData()->SetActiveScalars("Radius");
   output->GetPointData()->AddArray(vertexIds);
   for (vtkDataArray* array : std::vector<vtkDataArray*>{
-         filletIds, meanRadius, minimumRadius, maximumRadius, variation, length, area })
+         filletIds, meanRadius, minimumRadius, maximumRadius, variation, length, area, arc })
   {
     output->GetCellData()->AddArray(array);
   }

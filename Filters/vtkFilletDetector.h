@@ -26,7 +26,12 @@
  * to one radius past a polyline's end, e.g. to a sharp edge); each vertex of
  * the polyline is then moved to the centre of the circle fitted to the
  * fillet's cross-section there, and the faces are grown again along the
- * refined line, their corners within FaceTolerance of its envelope.
+ * refined line, their corners within FaceTolerance of its envelope and
+ * within its arc (where the ball leaves the surface the faces end, though the
+ * flat face beyond stays near the envelope for a while). A polyline whose
+ * faces wrap more than five eighths of the ball's circle goes round a tube
+ * (a handle, a pipe), not a fillet (a ball between two faces touches at most
+ * half of it), and is dropped.
  *
  * Inputs: port 0 the medial mesh with its Atlas (field data `AtlasSites` /
  * `AtlasOffsets`, point data `Radius`; where it also has `PlacedRadius`, the
@@ -41,7 +46,9 @@
  * data `Radius` (refined) and `MedialVertexId` (the medial vertex refined)
  * and cell data `FilletId`, `MeanRadius` (length-weighted), `MinimumRadius`,
  * `MaximumRadius`, `RadiusVariation` ((max - min) / mean: 0 for a
- * constant-radius fillet), `Length` and `SurfaceArea` (of its faces).
+ * constant-radius fillet), `Length`, `SurfaceArea` (of its faces) and
+ * `ArcAngle` (degrees of the ball's circle its faces cover: 180 minus the
+ * angle between the faces it blends, 90 on a right-angled edge).
  * Output 1: the surface (as prepared for the pipeline: same triangles as the
  * diagram refers to) with cell data `FilletId` (-1 on no fillet). Both
  * outputs carry field data `NumberOfFillets`, `BoundaryEdges` and

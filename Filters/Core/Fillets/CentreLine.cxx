@@ -101,7 +101,9 @@ void RefineCentreLine(
 {
   const std::size_t n = fillet.Centres.size();
   std::vector<Point3> centres = fillet.Centres;
+  const std::vector<double> radii0 = fillet.Radii;
   std::vector<std::uint8_t> fitted(n, 0);
+  std::vector<double> arc(n, 0.0);
   // Each point goes to the vertex nearest to its closest point on the line.
   std::vector<std::vector<Point3>> nearest(n);
   for (const Point3& p : points)
@@ -193,68 +195,145 @@ void RefineCentreLine(
       fillet.Centres[i] = centres[i] + circle.X * e1 + circle.Y * e2 + along * tangent;
       fillet.Radii[i] = circle.Radius;
       fitted[i] = 1;
+      arc[i] = circle.InlierArc;
     }
   }
-  // A fit whose radius stands out from its neighbours' (an odd section, e.g.
-  // where fins cross the line) does not count.
+  // A section that sees only part of the arc pins its centre poorly (a
+  // shorter arc of the same radius fits with the centre slid along it):
+  // it must span most of what the line's sections typically span.
+  std::vector<double> arcs;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (fitted[i])
+    {
+      arcs.push_back(arc[i]);
+    }
+  }
+  if (!arcs.empty())
+  {
+    std::nth_element(arcs.begin(), arcs.begin() + arcs.size() / 2, arcs.end());
+    const double typical = arcs[arcs.size() / 2];
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      if (fitted[i] && arc[i] < 0.75 * typical)
+      {
+        fitted[i] = 0;
+        fillet.Centres[i] = centres[i];
+        fillet.Radii[i] = radii0[i];
+      }
+    }
+  }
+  // A fit whose radius stands out from its neighbours' trend (an odd
+  // section, e.g. where fins cross the line) does not count. The trend is
+  // linear along the line, robustly: the median slope of the pairs of fits
+  // around, and the median of what each neighbour predicts with it (a
+  // variable-radius fillet's radius changes from one section to the next).
+  auto median = [](std::vector<double> values)
+  {
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+  };
   std::vector<std::uint8_t> trusted = fitted;
   for (std::size_t i = 0; i < n; ++i)
   {
-    std::vector<double> window;
-    for (long k = -2; k <= 2; ++k)
+    if (!fitted[i])
     {
-      const long j = static_cast<long>(i) + k;
-      const std::size_t w = fillet.Closed
-        ? static_cast<std::size_t>((j + 2 * static_cast<long>(n)) % static_cast<long>(n))
-        : static_cast<std::size_t>(j);
-      if ((fillet.Closed || (j >= 0 && j < static_cast<long>(n))) && fitted[w])
+      continue;
+    }
+    // Fitted vertices within two steps, with their signed distance along.
+    std::vector<std::pair<double, std::size_t>> window{ { 0.0, i } };
+    for (int step = -1; step <= 1; step += 2)
+    {
+      std::size_t k = i;
+      double along = 0.0;
+      for (int count = 0; count < 2; ++count)
       {
-        window.push_back(fillet.Radii[w]);
+        if (!fillet.Closed && ((step < 0 && k == 0) || (step > 0 && k + 1 == n)))
+        {
+          break;
+        }
+        const std::size_t next = (k + n + static_cast<std::size_t>(step + 1) - 1) % n;
+        along += Norm(centres[next] - centres[k]);
+        k = next;
+        if (k == i ||
+          std::any_of(
+            window.begin(), window.end(), [&](const auto& entry) { return entry.second == k; }))
+        {
+          break;
+        }
+        if (fitted[k])
+        {
+          window.push_back({ step * along, k });
+        }
       }
     }
-    if (fitted[i] && window.size() >= 3)
+    if (window.size() < 3)
     {
-      std::nth_element(window.begin(), window.begin() + window.size() / 2, window.end());
-      const double median = window[window.size() / 2];
-      trusted[i] = std::abs(fillet.Radii[i] - median) <= 4.0 * inlier * median;
+      continue;
     }
+    std::vector<double> slopes, predictions;
+    for (std::size_t a = 0; a < window.size(); ++a)
+    {
+      for (std::size_t b = a + 1; b < window.size(); ++b)
+      {
+        const double ds = window[b].first - window[a].first;
+        if (ds != 0.0)
+        {
+          slopes.push_back((fillet.Radii[window[b].second] - fillet.Radii[window[a].second]) / ds);
+        }
+      }
+    }
+    const double slope = slopes.empty() ? 0.0 : median(slopes);
+    for (std::size_t a = 1; a < window.size(); ++a)
+    {
+      predictions.push_back(fillet.Radii[window[a].second] - slope * window[a].first);
+    }
+    const double predicted = median(predictions);
+    trusted[i] = std::abs(fillet.Radii[i] - predicted) <= 4.0 * inlier * predicted;
   }
-  // Vertices without a trusted fit take the displacement and radius of the
-  // trusted ones on both sides, weighted by distance along the line.
+  // Vertices without a trusted fit take the radius of the trusted ones on
+  // both sides, weighted by distance along the line, and a centre on the
+  // cubic (Hermite) curve through those fits with the tangents their own
+  // neighbouring fits give: a chord would cut across a curved line, and
+  // the raw medial vertex zig-zags about it.
   std::vector<Point3> offset(n);
   for (std::size_t i = 0; i < n; ++i)
   {
     offset[i] = fillet.Centres[i] - centres[i];
   }
   const std::vector<double> radii = fillet.Radii;
+  // The nearest trusted vertex from j in direction step (+1 or -1), -1 for
+  // none, and the distance to it along the line.
+  auto nearestTrusted = [&](std::size_t j, int step, double& distance) -> long
+  {
+    distance = 0.0;
+    std::size_t k = j;
+    for (std::size_t count = 1; count < n; ++count)
+    {
+      if (!fillet.Closed && ((step < 0 && k == 0) || (step > 0 && k + 1 == n)))
+      {
+        return -1;
+      }
+      const std::size_t next = (k + n + static_cast<std::size_t>(step + 1) - 1) % n;
+      distance += Norm(centres[next] - centres[k]);
+      k = next;
+      if (trusted[k])
+      {
+        return static_cast<long>(k);
+      }
+    }
+    return -1;
+  };
+  auto fit = [&](std::size_t j) { return centres[j] + offset[j]; };
   for (std::size_t i = 0; i < n; ++i)
   {
     if (trusted[i])
     {
       continue;
     }
-    long before = -1, after = -1;
     double toBefore = 0.0, toAfter = 0.0;
-    for (std::size_t k = 1; k < n && before < 0; ++k)
-    {
-      if (!fillet.Closed && k > i)
-      {
-        break;
-      }
-      const std::size_t j = (i + n - k) % n;
-      toBefore += Norm(centres[(j + 1) % n] - centres[j]);
-      before = trusted[j] ? static_cast<long>(j) : -1;
-    }
-    for (std::size_t k = 1; k < n && after < 0; ++k)
-    {
-      if (!fillet.Closed && i + k >= n)
-      {
-        break;
-      }
-      const std::size_t j = (i + k) % n;
-      toAfter += Norm(centres[j] - centres[(j + n - 1) % n]);
-      after = trusted[j] ? static_cast<long>(j) : -1;
-    }
+    const long before = nearestTrusted(i, -1, toBefore);
+    const long after = nearestTrusted(i, +1, toAfter);
     if (before < 0 && after < 0)
     {
       fillet.Centres[i] = centres[i];
@@ -265,45 +344,43 @@ void RefineCentreLine(
       // Past the last trusted fit towards an end of the line: continue the
       // trend of the last two (a radius changing along the line keeps
       // changing), or copy the last one when there is no second.
-      const long step = before < 0 ? 1 : -1;
       const long first = before < 0 ? after : before;
-      long second = -1;
       double between = 0.0;
-      for (long j = first + step; j >= 0 && j < static_cast<long>(n); j += step)
-      {
-        between += Norm(centres[j] - centres[j - step]);
-        if (trusted[j])
-        {
-          second = j;
-          break;
-        }
-      }
+      const long second =
+        nearestTrusted(static_cast<std::size_t>(first), before < 0 ? 1 : -1, between);
       const double distance = before < 0 ? toAfter : toBefore;
       // At most as far again as the two fits are apart, and the radius
       // within half and one and a half times the last fit's.
       const double u = second >= 0 && between > 0.0 ? std::min(distance / between, 1.0) : 0.0;
       const std::size_t f = static_cast<std::size_t>(first);
       const std::size_t g = static_cast<std::size_t>(second >= 0 ? second : first);
-      if (second >= 0)
-      {
-        const Point3 fittedF = centres[f] + offset[f], fittedG = centres[g] + offset[g];
-        fillet.Centres[i] = fittedF + u * (fittedF - fittedG);
-      }
-      else
-      {
-        fillet.Centres[i] = centres[i] + offset[f];
-      }
+      fillet.Centres[i] = second >= 0 ? fit(f) + u * (fit(f) - fit(g)) : centres[i] + offset[f];
       fillet.Radii[i] =
         std::clamp(radii[f] + u * (radii[f] - radii[g]), 0.5 * radii[f], 1.5 * radii[f]);
       continue;
     }
-    const double w = before < 0 ? 1.0 : (after < 0 ? 0.0 : toBefore / (toBefore + toAfter));
-    const std::size_t b =
-      before < 0 ? static_cast<std::size_t>(after) : static_cast<std::size_t>(before);
-    const std::size_t a =
-      after < 0 ? static_cast<std::size_t>(before) : static_cast<std::size_t>(after);
-    fillet.Centres[i] = centres[i] + (1.0 - w) * offset[b] + w * offset[a];
+    const std::size_t b = static_cast<std::size_t>(before), a = static_cast<std::size_t>(after);
+    const double span = toBefore + toAfter;
+    const double w = toBefore / span;
     fillet.Radii[i] = (1.0 - w) * radii[b] + w * radii[a];
+    if (a == b)
+    {
+      fillet.Centres[i] = centres[i] + offset[b];
+      continue;
+    }
+    // Tangents (per unit length along the line) at the two fits.
+    double beyondB = 0.0, beyondA = 0.0;
+    const long bb = nearestTrusted(b, -1, beyondB), aa = nearestTrusted(a, +1, beyondA);
+    const Point3 chord = (1.0 / span) * (fit(a) - fit(b));
+    const Point3 tangentB = bb >= 0 && bb != static_cast<long>(a)
+      ? (1.0 / (span + beyondB)) * (fit(a) - fit(static_cast<std::size_t>(bb)))
+      : chord;
+    const Point3 tangentA = aa >= 0 && aa != static_cast<long>(b)
+      ? (1.0 / (span + beyondA)) * (fit(static_cast<std::size_t>(aa)) - fit(b))
+      : chord;
+    const double w2 = w * w, w3 = w2 * w;
+    fillet.Centres[i] = (2 * w3 - 3 * w2 + 1) * fit(b) + ((w3 - 2 * w2 + w) * span) * tangentB +
+      (3 * w2 - 2 * w3) * fit(a) + ((w3 - w2) * span) * tangentA;
   }
   // Where the radius changes along the line (slope r' = dr/ds), a ball
   // touches the fillet along a circle that is not its great circle: radius
@@ -326,6 +403,50 @@ void RefineCentreLine(
     fillet.Radii[i] = r;
     fillet.Centres[i] = circleCentres[i] + (slope * r / length) * step;
   }
+}
+
+double FacesArc(const Fillet& fillet, const std::vector<Point3>& points)
+{
+  const std::size_t n = fillet.Centres.size();
+  if (n < 2)
+  {
+    return 0.0;
+  }
+  // Sections per segment of the line, each in the segment's own frame.
+  std::vector<std::vector<std::array<double, 2>>> sections(fillet.Closed ? n : n - 1);
+  for (const Point3& p : points)
+  {
+    const PolylineFoot foot = NearestOnPolyline(fillet.Centres, fillet.Closed, p);
+    // Past an open line's ends the faces curve round its end ball.
+    if (!fillet.Closed && (foot.Unclamped < 0.0 || foot.Unclamped > 1.0))
+    {
+      continue;
+    }
+    const std::size_t i = foot.Segment;
+    const Point3 tangent = Normalized(fillet.Centres[(i + 1) % n] - fillet.Centres[i]);
+    if (!(Norm(tangent) > 0.0))
+    {
+      continue;
+    }
+    const Point3 helper = std::abs(tangent[0]) < 0.9 ? Point3{ 1, 0, 0 } : Point3{ 0, 1, 0 };
+    const Point3 e1 = Normalized(Cross(tangent, helper)), e2 = Cross(tangent, e1);
+    const Point3 d = p - foot.Foot;
+    sections[i].push_back({ Dot(d, e1), Dot(d, e2) });
+  }
+  std::vector<double> arcs;
+  for (const auto& section : sections)
+  {
+    if (section.size() >= 6)
+    {
+      arcs.push_back(SpannedArc(section, 0.0, 0.0));
+    }
+  }
+  if (arcs.empty())
+  {
+    return 0.0;
+  }
+  std::nth_element(arcs.begin(), arcs.begin() + arcs.size() / 2, arcs.end());
+  return arcs[arcs.size() / 2];
 }
 
 void TrimFoldedEnds(Fillet& chain)

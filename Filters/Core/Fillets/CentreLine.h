@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace medialaxis
@@ -24,6 +25,7 @@ struct EnvelopePiece
   ConePrimitive Cone;     // a ball when both ends coincide
   Point3 Lo, Hi;          // bounding box, grown by the tolerance
   bool Extension = false; // extrapolated past an end of the line
+  Point3 LineDirection;   // unit, of the centre line there (zero: none)
 };
 
 // Where an open centre line ends and heads: its centres and radii near one
@@ -75,16 +77,26 @@ public:
         }
         const std::size_t last = end ? n - 1 : 0;
         const double reach = 2.0 * fit.Radius;
-        this->Add(centres[last], radii[last], fit.Centre, fit.Radius, true);
+        // The last vertex and the fitted end nearly coincide: the piece
+        // between them takes the fitted line's direction, not theirs.
+        this->Add(centres[last], radii[last], fit.Centre, fit.Radius, true, &fit.Direction);
         this->Add(fit.Centre, fit.Radius, fit.Centre + reach * fit.Direction,
           fit.Radius * (1.0 + 2.0 * fit.Slope), true);
       }
     }
   }
 
-  // Whether p lies on the envelope, within `tolerance` times the local
-  // radius, with the surface normal `normal`.
-  bool Matches(const Point3& p, const Point3& normal, double tolerance) const
+  // Where p lies on the envelope, within `tolerance` times the local radius,
+  // with the surface normal `normal`: the envelope's normal there, the
+  // centre line's direction (zero on a ball) and the tolerance applied
+  // (larger past the ends).
+  struct Match
+  {
+    Point3 Normal;
+    Point3 LineDirection;
+    double Tolerance;
+  };
+  std::optional<Match> Find(const Point3& p, const Point3& normal, double tolerance) const
   {
     for (const EnvelopePiece& piece : this->Pieces)
     {
@@ -104,18 +116,28 @@ public:
                                                                                  : tolerance;
       if (std::abs(d.Distance) <= tol * radius && Dot(d.Normal, normal) >= this->CosNormal)
       {
-        return true;
+        return Match{ d.Normal, piece.LineDirection, tol };
       }
     }
-    return false;
+    return std::nullopt;
+  }
+
+  // Whether p lies on the envelope (see Find).
+  bool Matches(const Point3& p, const Point3& normal, double tolerance) const
+  {
+    return this->Find(p, normal, tolerance).has_value();
   }
 
 private:
-  void Add(const Point3& c0, double r0, const Point3& c1, double r1, bool extension = false)
+  void Add(const Point3& c0, double r0, const Point3& c1, double r1, bool extension = false,
+    const Point3* lineDirection = nullptr)
   {
     EnvelopePiece piece;
     piece.Extension = extension;
     piece.Cone = MakeCone(c0, r0, c1, r1);
+    piece.LineDirection = lineDirection ? *lineDirection
+      : piece.Cone.Length > 0.0         ? piece.Cone.Axis
+                                        : Point3{ 0, 0, 0 };
     const double reach = std::max(r0, r1) * (1.0 + this->Reach);
     for (int k = 0; k < 3; ++k)
     {
@@ -139,6 +161,11 @@ private:
 // do not smear, provided the line is already close to the true one.
 void RefineCentreLine(
   Fillet& fillet, const std::vector<Point3>& points, double inlier, bool fromLine);
+
+// The arc (radians) of the circle around the line that `points` (the
+// corners of its faces) cover: the median over the line's segments of the
+// angle the points beside each span around it.
+double FacesArc(const Fillet& fillet, const std::vector<Point3>& points);
 
 // The last medial edges of an open line may turn back on it (the ends of
 // medial sheets zig-zag); such an end vertex is no further along the line.

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -18,7 +19,32 @@ struct FittedCircle
   double X = 0.0, Y = 0.0, Radius = 0.0;
   bool Valid = false;
   double InlierFraction = 0.0; // set by FitCircleRobust
+  double InlierArc = 0.0;      // radians the inliers span; set by FitCircleRobust
 };
+
+/// The arc (radians) that points around centre (x, y) span: the full turn
+/// less the largest angular gap between them.
+inline double SpannedArc(const std::vector<std::array<double, 2>>& points, double x, double y)
+{
+  if (points.size() < 2)
+  {
+    return 0.0;
+  }
+  std::vector<double> angles;
+  angles.reserve(points.size());
+  for (const auto& p : points)
+  {
+    angles.push_back(std::atan2(p[1] - y, p[0] - x));
+  }
+  std::sort(angles.begin(), angles.end());
+  constexpr double Turn = 6.283185307179586;
+  double gap = angles.front() + Turn - angles.back();
+  for (std::size_t i = 1; i < angles.size(); ++i)
+  {
+    gap = std::max(gap, angles[i] - angles[i - 1]);
+  }
+  return Turn - gap;
+}
 
 /// Algebraic (Kasa) fit as the start, then Gauss-Newton on the geometric
 /// distances; points farther than trim * radius from the circle are dropped
@@ -178,8 +204,9 @@ inline FittedCircle FitCircleRobust(const std::vector<std::array<double, 2>>& po
       inliers.push_back(p);
     }
   }
-  FittedCircle refined = FitCircle(std::move(inliers), inlier);
+  FittedCircle refined = FitCircle(inliers, inlier);
   refined.InlierFraction = static_cast<double>(bestSupport) / static_cast<double>(n);
+  refined.InlierArc = refined.Valid ? SpannedArc(inliers, refined.X, refined.Y) : 0.0;
   return refined;
 }
 }

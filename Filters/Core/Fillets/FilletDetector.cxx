@@ -14,6 +14,7 @@
 #include <cmath>
 #include <deque>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -22,6 +23,8 @@ namespace medialaxis
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
+// Faces around more of the ball's circle than this wrap a tube (step 4).
+constexpr double MaximumFilletArc = 1.25 * Pi;
 
 // Compressed lists: item i owns Items[Offsets[i] .. Offsets[i + 1]).
 struct Lists
@@ -29,6 +32,29 @@ struct Lists
   std::vector<Index> Offsets;
   std::vector<Index> Items;
 };
+
+// Groups (key, item) pairs by key, each pair once, items in increasing order.
+Lists GroupPairs(std::size_t keys, std::vector<std::pair<Index, Index>> pairs)
+{
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  Lists lists;
+  lists.Offsets.assign(keys + 1, 0);
+  for (const auto& pair : pairs)
+  {
+    ++lists.Offsets[pair.first + 1];
+  }
+  for (std::size_t k = 0; k < keys; ++k)
+  {
+    lists.Offsets[k + 1] += lists.Offsets[k];
+  }
+  lists.Items.reserve(pairs.size());
+  for (const auto& pair : pairs)
+  {
+    lists.Items.push_back(pair.second);
+  }
+  return lists;
+}
 
 // The surface triangles each site's restricted cell touches, each once.
 Lists TrianglesOfSites(std::size_t sites, const std::vector<Index>& polygonSite,
@@ -39,24 +65,22 @@ Lists TrianglesOfSites(std::size_t sites, const std::vector<Index>& polygonSite,
   {
     pairs[p] = { polygonSite[p], polygonTriangle[p] };
   }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  Lists lists;
-  lists.Offsets.assign(sites + 1, 0);
-  for (const auto& pair : pairs)
+  return GroupPairs(sites, std::move(pairs));
+}
+
+// The triangles around each surface vertex.
+Lists TrianglesOfVertices(const TriangleMesh& surface)
+{
+  std::vector<std::pair<Index, Index>> pairs;
+  pairs.reserve(3 * surface.Triangles.size());
+  for (std::size_t t = 0; t < surface.Triangles.size(); ++t)
   {
-    ++lists.Offsets[pair.first + 1];
+    for (Index v : surface.Triangles[t])
+    {
+      pairs.emplace_back(v, static_cast<Index>(t));
+    }
   }
-  for (std::size_t s = 0; s < sites; ++s)
-  {
-    lists.Offsets[s + 1] += lists.Offsets[s];
-  }
-  lists.Items.reserve(pairs.size());
-  for (const auto& pair : pairs)
-  {
-    lists.Items.push_back(pair.second);
-  }
-  return lists;
+  return GroupPairs(surface.Points.size(), std::move(pairs));
 }
 
 // The surface triangles the Atlases of medial vertices [first, last) touch,
@@ -84,6 +108,51 @@ struct SurfaceTriangle
   Point3 Normal;
   double Area;
 };
+
+// The corners of the given triangles, each once.
+std::vector<Point3> CornerPoints(const TriangleMesh& surface, const std::vector<Index>& triangles)
+{
+  std::vector<Index> ids;
+  for (Index t : triangles)
+  {
+    ids.insert(ids.end(), surface.Triangles[t].begin(), surface.Triangles[t].end());
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  std::vector<Point3> corners;
+  corners.reserve(ids.size());
+  for (Index v : ids)
+  {
+    corners.push_back(surface.Points[v]);
+  }
+  return corners;
+}
+
+// A fillet's faces end where its ball leaves the surface. At a surface
+// vertex on them the envelope's normal lies between the normals of the
+// triangles around the vertex, across the arc; at a vertex past a tangent
+// line, on the face beyond (which stays near the envelope for a while), all
+// of them are turned one way from it, towards the fillet, by about the
+// angle the vertex lies past the line. `tolerance` is the sine of the angle
+// the envelope's normal may be off.
+bool WithinArc(const CentreLineEnvelope::Match& match, Index vertex, const Lists& vertexTriangles,
+  const std::vector<SurfaceTriangle>& triangles, double tolerance)
+{
+  const Point3 across = Cross(match.LineDirection, match.Normal);
+  const double length = Norm(across);
+  if (!(length > 0.0))
+  {
+    return true; // on a ball, no one direction across
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (Index k = vertexTriangles.Offsets[vertex]; k < vertexTriangles.Offsets[vertex + 1]; ++k)
+  {
+    const double s = Dot(triangles[vertexTriangles.Items[k]].Normal, across) / length;
+    lo = std::min(lo, s);
+    hi = std::max(hi, s);
+  }
+  return lo <= tolerance && hi >= -tolerance;
+}
 
 // Where a triangle is tested against a medial edge: corners, edge midpoints
 // and centroid, so that edges shorter than the triangles still see some.
@@ -356,6 +425,29 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
     }
     return region;
   };
+  // A triangle is on a fillet's faces when its centroid and corners lie on
+  // the envelope, the corners within its arc (the angle they may be off it
+  // twice the envelope's tolerance there: a centre off by that much turns
+  // the normals by about as much).
+  const Lists vertexTriangles = TrianglesOfVertices(surface);
+  auto onFaces = [&](const CentreLineEnvelope& envelope, Index t, double centroidTolerance,
+                   double cornerTolerance)
+  {
+    const Point3& n = triangles[t].Normal;
+    if (!envelope.Matches(triangles[t].Centroid, n, centroidTolerance))
+    {
+      return false;
+    }
+    for (Index v : surface.Triangles[t])
+    {
+      const auto match = envelope.Find(surface.Points[v], n, cornerTolerance);
+      if (!match || !WithinArc(*match, v, vertexTriangles, triangles, 2.0 * match->Tolerance))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
   const double reach = std::max(options.RadiusTolerance, options.FaceTolerance);
   std::vector<double> areaAlongLine(result.Fillets.size(), 0.0);
   for (std::size_t f = 0; f < result.Fillets.size(); ++f)
@@ -368,28 +460,8 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
     const CentreLineEnvelope loose(
       fillet.Centres, fillet.Radii, fillet.Closed, reach, cosNormal, options.RadiusTolerance);
     const std::vector<Index> found = grow(seeds,
-      [&](Index t)
-      {
-        const Triangle& tri = surface.Triangles[t];
-        const Point3& n = triangles[t].Normal;
-        const double tol = options.RadiusTolerance;
-        return loose.Matches(triangles[t].Centroid, n, tol) &&
-          loose.Matches(surface.Points[tri[0]], n, tol) &&
-          loose.Matches(surface.Points[tri[1]], n, tol) &&
-          loose.Matches(surface.Points[tri[2]], n, tol);
-      });
-    std::vector<Index> cornerIds;
-    for (Index t : found)
-    {
-      cornerIds.insert(cornerIds.end(), surface.Triangles[t].begin(), surface.Triangles[t].end());
-    }
-    std::sort(cornerIds.begin(), cornerIds.end());
-    cornerIds.erase(std::unique(cornerIds.begin(), cornerIds.end()), cornerIds.end());
-    std::vector<Point3> corners;
-    for (Index v : cornerIds)
-    {
-      corners.push_back(surface.Points[v]);
-    }
+      [&](Index t) { return onFaces(loose, t, options.RadiusTolerance, options.RadiusTolerance); });
+    const std::vector<Point3> corners = CornerPoints(surface, found);
     RefineCentreLine(fillet, corners, 0.25 * options.FaceTolerance, false);
     RefineCentreLine(fillet, corners, 0.25 * options.FaceTolerance, true);
     TrimFoldedEnds(fillet);
@@ -398,16 +470,10 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
     const CentreLineEnvelope tight(
       fillet.Centres, fillet.Radii, fillet.Closed, reach, cosNormal, options.RadiusTolerance);
     seeds.insert(seeds.end(), found.begin(), found.end());
-    for (Index t : grow(seeds,
-           [&](Index t)
-           {
-             const Triangle& tri = surface.Triangles[t];
-             const Point3& n = triangles[t].Normal;
-             return tight.Matches(triangles[t].Centroid, n, options.RadiusTolerance) &&
-               tight.Matches(surface.Points[tri[0]], n, options.FaceTolerance) &&
-               tight.Matches(surface.Points[tri[1]], n, options.FaceTolerance) &&
-               tight.Matches(surface.Points[tri[2]], n, options.FaceTolerance);
-           }))
+    const std::vector<Index> faces = grow(seeds,
+      [&](Index t) { return onFaces(tight, t, options.RadiusTolerance, options.FaceTolerance); });
+    fillet.ArcAngle = FacesArc(fillet, CornerPoints(surface, faces));
+    for (Index t : faces)
     {
       result.TriangleFillet[t] = static_cast<int>(f);
       ++fillet.SurfaceTriangles;
@@ -421,14 +487,18 @@ FilletDetectionResult DetectFillets(const TriangleMesh& surface, const MedialMes
   // 4. A rolling ball leaves faces about as wide as its arc along the whole
   // line; a line with much less (a sheet boundary near some curved face) is
   // no fillet. Only the faces along the line count: a short line must not
-  // pass on the faces found past its ends alone.
+  // pass on the faces found past its ends alone. And a ball between two
+  // faces touches at most half its circle (the full-round end of a rib):
+  // faces around more than five eighths of it wrap a tube (a cup's handle,
+  // a pipe), whose centre line is a curve skeleton, not a fillet's.
   std::vector<int> renumber(result.Fillets.size(), -1);
   std::vector<Fillet> kept;
   for (std::size_t f = 0; f < result.Fillets.size(); ++f)
   {
     const Fillet& fillet = result.Fillets[f];
     const double expected = fillet.Length * fillet.MeanRadius * options.MinimumArcAngle;
-    if (fillet.MinimumRadius > 0.0 && areaAlongLine[f] >= 0.5 * expected)
+    if (fillet.MinimumRadius > 0.0 && areaAlongLine[f] >= 0.5 * expected &&
+      fillet.ArcAngle <= MaximumFilletArc)
     {
       renumber[f] = static_cast<int>(kept.size());
       kept.push_back(fillet);

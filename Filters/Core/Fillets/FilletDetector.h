@@ -75,6 +75,10 @@ struct Fillet
   double MaximumRadius = 0.0;
   /// (MaximumRadius - MinimumRadius) / MeanRadius: 0 for a constant-radius fillet.
   double RadiusVariation = 0.0;
+  /// Arc (radians) of the ball's circle its faces cover across the line
+  /// (the median along it): pi minus the angle between the faces it blends,
+  /// pi / 2 for a right-angled edge.
+  double ArcAngle = 0.0;
   std::size_t SurfaceTriangles = 0;
   double SurfaceArea = 0.0;
 };

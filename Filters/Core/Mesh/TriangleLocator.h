@@ -153,12 +153,21 @@ private:
     double enter = 0.0, leave = limit;
     for (int k = 0; k < 3; ++k)
     {
+      if (std::isinf(inverse[k]))
+      {
+        // A ray parallel to the slab: inside it all along, or never (the
+        // products below would be 0 * infinity on its bounding planes).
+        if (origin[k] < b.Lo[k] || origin[k] > b.Hi[k])
+        {
+          return std::numeric_limits<double>::infinity();
+        }
+        continue;
+      }
       double t0 = (b.Lo[k] - origin[k]) * inverse[k], t1 = (b.Hi[k] - origin[k]) * inverse[k];
       if (t0 > t1)
       {
         std::swap(t0, t1);
       }
-      // NaN (0 * infinity, a ray in a slab's plane) leaves the bounds unchanged.
       enter = t0 > enter ? t0 : enter;
       leave = t1 < leave ? t1 : leave;
     }
@@ -179,14 +188,17 @@ private:
     }
     const double inv = 1.0 / det;
     const Point3 s = origin - a;
+    // Barycentric tests with a little slack: a ray through a shared edge or
+    // vertex must not slip between the triangles by rounding.
+    constexpr double Slack = 1e-12;
     const double u = Dot(s, p) * inv;
-    if (u < 0.0 || u > 1.0)
+    if (u < -Slack || u > 1.0 + Slack)
     {
       return -1.0;
     }
     const Point3 q = Cross(s, e1);
     const double v = Dot(direction, q) * inv;
-    if (v < 0.0 || u + v > 1.0)
+    if (v < -Slack || u + v > 1.0 + Slack)
     {
       return -1.0;
     }

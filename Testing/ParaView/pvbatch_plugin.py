@@ -197,4 +197,17 @@ check(hausdorff is not None and 0 < hausdorff.GetValue(0) < 20,
       "implausible Hausdorff distance %s" % (hausdorff and hausdorff.GetValue(0)))
 envelope_samples = servermanager.Fetch(error, idx=1)
 check(envelope_samples.GetNumberOfPoints() == 20000, "expected 20000 envelope samples")
+# Generalized primitives on a capsule and its axis (a line drawn by hand):
+# two vertex primitives and one edge primitive, the latter of the capsule's radius.
+capsule = MedialTestShape(Shape="Capsule", Radius=0.3, Length=1.0)
+axis = Line(Point1=[0, 0, -0.5], Point2=[0, 0, 0.5], Resolution=1)
+primitives = GeneralizedPrimitives(Input=capsule, Skeleton=axis)
+primitives.UpdatePipeline()
+collection = servermanager.Fetch(primitives)
+check(collection.GetNumberOfPartitionedDataSets() == 3,
+      "expected 3 primitives, got %d" % collection.GetNumberOfPartitionedDataSets())
+edge = collection.GetPartition(2, 0)
+edge_radius = edge.GetPointData().GetArray("Radius").GetRange()
+check(0.29 < edge_radius[0] and edge_radius[1] <= 0.3 + 1e-6,
+      "edge primitive radii %s, the capsule's is 0.3" % (edge_radius,))
 print("pvbatch plugin test passed")

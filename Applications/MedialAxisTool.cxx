@@ -12,20 +12,24 @@
 #include "vtkMedialAxisWriter.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkMedialReconstructionError.h"
+#include "vtkMedialSkeletalDiagram.h"
 #include "vtkMedialStructure.h"
 #include "vtkMedialSurfaceValidator.h"
 #include "vtkMidSurfaceExtractor.h"
 #include "vtkStructuralMedialAxis.h"
 #include "vtkSurfaceFileReader.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
+#include "vtkPartitionedDataSetCollection.h"
 #include "vtkPolyData.h"
 #include "vtkXMLPolyDataWriter.h"
 
@@ -152,6 +156,13 @@ Options:
                         faces) with point data Thickness and cell data
                         WallId; the report gives the walls and the wall
                         thickness
+  --skeletal-diagram N  a Medial Skeletal Diagram of at most N elements from
+                        the MAT: write skeleton.vtp (its vertices, edges and
+                        triangles) and primitives.vtp (a generalized
+                        primitive, a radius per direction, per element; cell
+                        data ElementType and ElementId) until
+                        the surface is within 0.5% of the diagonal of them;
+                        the report gives the counts and the error reached
   --error               measure the two-sided Hausdorff distance between the
                         surface and the envelope (% of the bounding-box
                         diagonal) and write distance.vtp (the surface with
@@ -197,6 +208,7 @@ struct Options
   int FeatureNormalFiltering = 3;
   double SpikeRepair = 10.0;
   int Seed = 0, Threads = 0;
+  int SkeletalDiagram = 0; // most elements; 0: none
 };
 
 bool ParseNumber(const std::string& text, double& value)
@@ -422,6 +434,19 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     {
       o.MidSurface = true;
     }
+    else if (arg == "--skeletal-diagram")
+    {
+      if (!(problem = value(number)).empty())
+      {
+        return problem;
+      }
+      if (!(number >= 1.0 && number <= 1e6) ||
+        number != static_cast<double>(static_cast<long long>(number)))
+      {
+        return arg + " must be a whole number of elements from 1 to 1000000";
+      }
+      o.SkeletalDiagram = static_cast<int>(number);
+    }
     else if (arg == "--error")
     {
       o.Error = true;
@@ -523,6 +548,40 @@ void WriteOutputs(vtkPolyDataAlgorithm* stage, std::initializer_list<const char*
     WriteVtp(stage->GetOutput(port++), path);
     written.push_back(path);
   }
+}
+
+// The primitives of a skeletal diagram as one mesh, each triangle with its
+// element's ElementType and ElementId as cell data (one file for any viewer).
+vtkSmartPointer<vtkPolyData> JoinPrimitives(vtkPartitionedDataSetCollection* primitives)
+{
+  vtkNew<vtkAppendPolyData> append;
+  for (unsigned int e = 0; e < primitives->GetNumberOfPartitionedDataSets(); ++e)
+  {
+    auto* mesh = vtkPolyData::SafeDownCast(primitives->GetPartition(e, 0));
+    if (!mesh || mesh->GetNumberOfCells() == 0)
+    {
+      continue;
+    }
+    vtkNew<vtkPolyData> labelled;
+    labelled->ShallowCopy(mesh);
+    for (const char* name : { "ElementType", "ElementId" })
+    {
+      vtkNew<vtkIdTypeArray> label;
+      label->SetName(name);
+      label->SetNumberOfTuples(mesh->GetNumberOfCells());
+      label->FillValue(static_cast<vtkIdType>(mesh->GetFieldData()->GetArray(name)->GetTuple1(0)));
+      labelled->GetCellData()->AddArray(label);
+    }
+    labelled->GetFieldData()->Initialize();
+    append->AddInputData(labelled);
+  }
+  vtkSmartPointer<vtkPolyData> joined = vtkSmartPointer<vtkPolyData>::New();
+  if (append->GetNumberOfInputConnections(0) > 0)
+  {
+    append->Update();
+    joined->ShallowCopy(append->GetOutput());
+  }
+  return joined;
 }
 
 // Updates a stage after the one-click filter, timing it; prints what failed
@@ -778,6 +837,24 @@ int main(int argc, char** argv)
     }
     WriteOutputs(midSurface, { "mid_surface.vtp" }, dir, written);
   }
+  double diagramSeconds = 0.0;
+  vtkNew<vtkMedialSkeletalDiagram> diagram;
+  if (o.SkeletalDiagram > 0)
+  {
+    diagram->SetInputConnection(0, validator->GetOutputPort());
+    diagram->SetInputDataObject(1, mat);
+    diagram->SetMaximumElements(o.SkeletalDiagram);
+    if (!UpdateStage(diagram, "skeletal diagram", nullptr, diagramSeconds))
+    {
+      return ComputationFailed;
+    }
+    const std::string skeletonPath = (dir / "skeleton.vtp").string();
+    WriteVtp(diagram->GetSkeleton(), skeletonPath);
+    written.push_back(skeletonPath);
+    const std::string primitivesPath = (dir / "primitives.vtp").string();
+    WriteVtp(JoinPrimitives(diagram->GetPrimitives()), primitivesPath);
+    written.push_back(primitivesPath);
+  }
   if (!o.Screenshot.empty())
   {
     const std::string problem = medialaxis::WriteScreenshot(o.Screenshot, validator->GetOutput(),
@@ -860,6 +937,14 @@ int main(int argc, char** argv)
               << midSurface->GetEstimatedWallThickness() << ", "
               << midSurface->GetNumberOfJunctionEdges() << " junction edges\n";
   }
+  if (o.SkeletalDiagram > 0)
+  {
+    vtkPolyData* skeleton = diagram->GetSkeleton();
+    std::cout << "  skeletal diagram: " << skeleton->GetNumberOfPoints() << " vertices, "
+              << skeleton->GetNumberOfLines() << " edges, " << skeleton->GetNumberOfPolys()
+              << " triangles, surface within " << 100.0 * diagram->GetReachedError()
+              << "% of the diagonal of the primitives\n";
+  }
   for (const std::string& path : written)
   {
     std::cout << "  wrote " << path << "\n";
@@ -907,8 +992,8 @@ int main(int argc, char** argv)
     json << ", \"QueueInitialisation\": " << FieldValue(mat, "QueueInitialisationSeconds")
          << ", \"Envelope\": " << envelopeSeconds << ", \"Fillets\": " << filletSeconds
          << ", \"Structure\": " << structureSeconds << ", \"MidSurface\": " << midSurfaceSeconds
-         << ", \"Error\": " << errorSeconds << ", \"wall\": " << seconds
-         << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
+         << ", \"SkeletalDiagram\": " << diagramSeconds << ", \"Error\": " << errorSeconds
+         << ", \"wall\": " << seconds << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
          << ",\n  \"counts\": {\"sites\": " << FieldValue(mat, "Sites")
          << ", \"initial_vertices\": " << FieldValue(mat, "InitialVertices")
          << ", \"initial_triangles\": " << FieldValue(mat, "InitialTriangles")
@@ -966,6 +1051,16 @@ int main(int argc, char** argv)
            << ", \"wall_thickness\": " << midSurface->GetEstimatedWallThickness()
            << ", \"junction_edges\": " << midSurface->GetNumberOfJunctionEdges()
            << ", \"triangles\": " << midSurface->GetOutput()->GetNumberOfPolys() << "}";
+    }
+    if (o.SkeletalDiagram > 0)
+    {
+      vtkPolyData* skeleton = diagram->GetSkeleton();
+      json << ",\n  \"skeletal_diagram\": {\"vertices\": " << skeleton->GetNumberOfPoints()
+           << ", \"edges\": " << skeleton->GetNumberOfLines()
+           << ", \"triangles\": " << skeleton->GetNumberOfPolys()
+           << ", \"error\": " << diagram->GetReachedError()
+           << ", \"mean_error\": " << FieldValue(skeleton, "MeanError")
+           << ", \"failed_elements\": " << FieldValue(skeleton, "FailedElements") << "}";
     }
     if (o.Error)
     {

@@ -5,6 +5,7 @@
 #include "Mesh/TriangleLocator.h"
 #include "Skeletal/PrimitiveFit.h"
 #include "Skeletal/PrimitiveTemplate.h"
+#include "vtkPrimitiveCollection.h"
 #include "vtkSurfacePreparation.h"
 
 #include "vtkCellArray.h"
@@ -47,42 +48,6 @@ struct Element
   std::string Name;
 };
 
-vtkSmartPointer<vtkPolyData> PrimitiveMesh(
-  const medialaxis::PrimitiveTemplate& shape, const medialaxis::FittedPrimitive& fit)
-{
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  if (fit.Radius.empty())
-  {
-    return mesh;
-  }
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  const std::vector<medialaxis::Point3> surface = medialaxis::PrimitivePoints(shape, fit.Radius);
-  points->SetNumberOfPoints(static_cast<vtkIdType>(surface.size()));
-  vtkNew<vtkDoubleArray> radius, maximum;
-  radius->SetName("Radius");
-  maximum->SetName("MaximumRadius");
-  radius->SetNumberOfTuples(points->GetNumberOfPoints());
-  maximum->SetNumberOfTuples(points->GetNumberOfPoints());
-  for (std::size_t j = 0; j < surface.size(); ++j)
-  {
-    points->SetPoint(static_cast<vtkIdType>(j), surface[j].data());
-    radius->SetValue(static_cast<vtkIdType>(j), fit.Radius[j]);
-    maximum->SetValue(static_cast<vtkIdType>(j), fit.MaximumRadius[j]);
-  }
-  vtkNew<vtkCellArray> triangles;
-  for (const medialaxis::Triangle& t : shape.Triangles)
-  {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    triangles->InsertNextCell(3, ids);
-  }
-  mesh->SetPoints(points);
-  mesh->SetPolys(triangles);
-  mesh->GetPointData()->AddArray(radius);
-  mesh->GetPointData()->AddArray(maximum);
-  mesh->GetPointData()->SetActiveScalars("Radius");
-  return mesh;
-}
 }
 
 vtkGeneralizedPrimitiveFitter::vtkGeneralizedPrimitiveFitter()
@@ -203,12 +168,8 @@ int vtkGeneralizedPrimitiveFitter::RequestData(
       medialaxis::PrimitiveTemplate shape;
       try
       {
-        shape = element.Type == medialaxis::SkeletalElement::Vertex
-          ? medialaxis::MakeVertexTemplate(element.Corners[0], subdivisions)
-          : element.Type == medialaxis::SkeletalElement::Edge
-          ? medialaxis::MakeEdgeTemplate(element.Corners[0], element.Corners[1], around, spacing)
-          : medialaxis::MakeTriangleTemplate(
-              element.Corners[0], element.Corners[1], element.Corners[2], around, spacing);
+        shape = medialaxis::MakeElementTemplate(
+          element.Type, element.Corners, subdivisions, around, spacing);
       }
       catch (const std::invalid_argument& error)
       {
@@ -240,20 +201,8 @@ int vtkGeneralizedPrimitiveFitter::RequestData(
   std::ostringstream failures;
   for (std::size_t e = 0; e < elements.size(); ++e)
   {
-    vtkPolyData* mesh = meshes[e];
-    vtkNew<vtkIntArray> type;
-    type->SetName("ElementType");
-    type->InsertNextValue(static_cast<int>(elements[e].Type));
-    vtkNew<vtkIdTypeArray> id;
-    id->SetName("ElementId");
-    id->InsertNextValue(elements[e].Id);
-    mesh->GetFieldData()->AddArray(type);
-    mesh->GetFieldData()->AddArray(id);
-    vtkNew<vtkPartitionedDataSet> partitioned;
-    partitioned->SetPartition(0, mesh);
-    output->SetPartitionedDataSet(static_cast<unsigned int>(e), partitioned);
-    output->GetMetaData(static_cast<unsigned int>(e))
-      ->Set(vtkCompositeDataSet::NAME(), elements[e].Name.c_str());
+    medialaxis::SetPrimitive(output, static_cast<unsigned int>(e), meshes[e], elements[e].Type,
+      elements[e].Id, elements[e].Name);
     if (!errors[e].empty())
     {
       if (this->NumberOfFailedElements < 3)

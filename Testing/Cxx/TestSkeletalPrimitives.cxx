@@ -6,6 +6,7 @@
 #include "Mesh/TriangleLocator.h"
 #include "Skeletal/PrimitiveFit.h"
 #include "Skeletal/PrimitiveTemplate.h"
+#include "Skeletal/SkeletalDiagram.h"
 #include "Surface/AnalyticShapes.h"
 
 #include "TestHelpers.h"
@@ -16,9 +17,11 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
+#include "vtkMedialSkeletalDiagram.h"
 #include "vtkPartitionedDataSet.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPointData.h"
+#include "vtkStructuralMedialAxis.h"
 
 #include <gtest/gtest.h>
 
@@ -309,4 +312,108 @@ TEST(SkeletalPrimitives, VtkFilterFitsEachElementOfASkeleton)
   fitter->Update();
   EXPECT_EQ(errors->Count, 1);
   EXPECT_NE(errors->Last.find("triangulate"), std::string::npos) << errors->Last;
+}
+
+// The sparse skeleton from a simplified MAT: sites added where the surface
+// lies farthest from the primitives until it is within 0.5% of the
+// diagonal. An ellipsoid needs its centre alone (it is star-shaped from
+// it); a capsule and a dumbbell a few elements along their axes.
+TEST(SkeletalDiagram, FewElementsCoverSimpleShapes)
+{
+  TriangleMesh ellipsoid = MakeSphere(1.0, 16);
+  for (Point3& p : ellipsoid.Points)
+  {
+    p = { p[0], 0.7 * p[1], 0.5 * p[2] };
+  }
+  const struct
+  {
+    const char* Name;
+    TriangleMesh Surface;
+    std::size_t MaximumElements;
+  } shapes[] = { { "ellipsoid", ellipsoid, 3 }, { "capsule", MakeCapsule(0.3, 1.0, 12), 3 },
+    { "dumbbell", MakeDumbbell(1.2, 0.25, 0.1, 12), 5 } };
+  for (const auto& shape : shapes)
+  {
+    SCOPED_TRACE(shape.Name);
+    const test::SimplifiedRun run = test::Simplify(shape.Surface, 5000, 100, false);
+    SkeletalDiagramOptions options;
+    const SkeletalDiagram diagram =
+      BuildSkeletalDiagram(shape.Surface, run.Result.Medial.Mesh, options);
+    std::cout << shape.Name << ": " << diagram.Points.size() << " vertices, "
+              << diagram.Edges.size() << " edges, " << diagram.Triangles.size()
+              << " triangles after " << diagram.Insertions << " insertions; error "
+              << 100.0 * diagram.Error / diagram.Diagonal << "% (mean "
+              << 100.0 * diagram.MeanError / diagram.Diagonal << "%), " << diagram.FailedElements
+              << " failed\n";
+    EXPECT_LE(diagram.Error, options.MaximumError * diagram.Diagonal);
+    EXPECT_LE(diagram.NumberOfElements(), shape.MaximumElements);
+    EXPECT_EQ(diagram.Primitives.size(), diagram.NumberOfElements());
+    EXPECT_EQ(diagram.FailedElements, 0);
+  }
+
+  // From its centre alone (a skeleton of one sphere), the ellipsoid is one
+  // vertex primitive within the error bound, once its directions are fine
+  // enough for the curvature at the tips of its long axis (radius of
+  // curvature 0.25 at a distance 1: at 3 subdivisions, 642 directions 8
+  // degrees apart, the chords there fall 0.56% of the diagonal short).
+  MedialMesh centre;
+  centre.Centers = { { 0, 0, 0 } };
+  centre.Radii = { 0.5 };
+  SkeletalDiagramOptions fine;
+  fine.VertexSubdivisions = 4;
+  const SkeletalDiagram one = BuildSkeletalDiagram(ellipsoid, centre, fine);
+  std::cout << "ellipsoid from its centre: error " << 100.0 * one.Error / one.Diagonal << "%\n";
+  EXPECT_EQ(one.NumberOfElements(), 1u);
+  EXPECT_LE(one.Error, SkeletalDiagramOptions().MaximumError * one.Diagonal);
+}
+
+// The diagram filter in a pipeline: a dumbbell, its Structural MAT, the
+// diagram's skeleton and primitives; too small an element budget warns that
+// the error bound was not reached; no medial mesh is an error.
+TEST(SkeletalDiagram, VtkFilterGivesSkeletonAndPrimitives)
+{
+  vtkNew<vtkAnalyticShapeSource> dumbbell;
+  dumbbell->SetShapeToDumbbell();
+  dumbbell->SetLength(1.2);
+  dumbbell->SetRadius(0.25);
+  dumbbell->SetMinorRadius(0.1);
+  vtkNew<vtkStructuralMedialAxis> mat;
+  mat->SetInputConnection(dumbbell->GetOutputPort());
+  mat->SetNumberOfSamples(5000);
+  mat->SetTargetNumberOfVertices(100);
+  vtkNew<vtkMedialSkeletalDiagram> diagram;
+  diagram->SetInputConnection(0, dumbbell->GetOutputPort());
+  diagram->SetMedialAxisConnection(mat->GetOutputPort(0));
+  vtkNew<test::ErrorCatcher> warnings;
+  diagram->AddObserver(vtkCommand::WarningEvent, warnings);
+  diagram->Update();
+  vtkPolyData* skeleton = diagram->GetSkeleton();
+  vtkPartitionedDataSetCollection* primitives = diagram->GetPrimitives();
+  std::cout << "dumbbell diagram: " << skeleton->GetNumberOfPoints() << " vertices, "
+            << skeleton->GetNumberOfLines() << " edges, " << skeleton->GetNumberOfPolys()
+            << " triangles, error " << 100.0 * diagram->GetReachedError() << "%\n";
+  EXPECT_EQ(warnings->Count, 0) << warnings->Last;
+  EXPECT_LE(diagram->GetReachedError(), diagram->GetMaximumError());
+  EXPECT_EQ(diagram->GetNumberOfElements(),
+    skeleton->GetNumberOfPoints() + skeleton->GetNumberOfLines() + skeleton->GetNumberOfPolys());
+  EXPECT_EQ(static_cast<vtkIdType>(primitives->GetNumberOfPartitionedDataSets()),
+    diagram->GetNumberOfElements());
+  ASSERT_NE(skeleton->GetPointData()->GetArray("MedialVertexId"), nullptr);
+  ASSERT_NE(skeleton->GetFieldData()->GetArray("Error"), nullptr);
+  EXPECT_EQ(skeleton->GetFieldData()->GetArray("FailedElements")->GetTuple1(0), 0.0);
+
+  diagram->SetMaximumElements(1);
+  diagram->Update();
+  EXPECT_EQ(diagram->GetNumberOfElements(), 1);
+  EXPECT_EQ(warnings->Count, 1);
+  EXPECT_NE(warnings->Last.find("raise MaximumElements"), std::string::npos) << warnings->Last;
+
+  vtkNew<vtkMedialSkeletalDiagram> alone;
+  alone->SetInputConnection(0, dumbbell->GetOutputPort());
+  alone->SetInputDataObject(1, vtkNew<vtkPolyData>());
+  vtkNew<test::ErrorCatcher> errors;
+  alone->AddObserver(vtkCommand::ErrorEvent, errors);
+  alone->Update();
+  EXPECT_EQ(errors->Count, 1);
+  EXPECT_EQ(alone->GetSkeleton()->GetNumberOfPoints(), 0);
 }

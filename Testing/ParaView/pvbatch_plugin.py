@@ -210,4 +210,17 @@ edge = collection.GetPartition(2, 0)
 edge_radius = edge.GetPointData().GetArray("Radius").GetRange()
 check(0.29 < edge_radius[0] and edge_radius[1] <= 0.3 + 1e-6,
       "edge primitive radii %s, the capsule's is 0.3" % (edge_radius,))
+# The Medial Skeletal Diagram of a dumbbell from its Structural MAT.
+bell = MedialTestShape(Shape="Dumbbell", Length=1.2, Radius=0.25, MinorRadius=0.1)
+bell_mat = StructuralMedialAxis(Input=bell, NumberOfSamples=5000, TargetNumberOfVertices=100)
+msd = MedialSkeletalDiagram(Input=bell, MedialAxis=OutputPort(bell_mat, 0))
+msd.UpdatePipeline()
+msd_skeleton = servermanager.Fetch(msd, idx=0)
+msd_primitives = servermanager.Fetch(msd, idx=1)
+msd_error = msd_skeleton.GetFieldData().GetArray("Error").GetValue(0)
+check(msd_skeleton.GetNumberOfPoints() >= 2 and msd_error <= 0.005,
+      "dumbbell diagram: %d vertices, error %g" % (msd_skeleton.GetNumberOfPoints(), msd_error))
+check(msd_primitives.GetNumberOfPartitionedDataSets() == msd_skeleton.GetNumberOfPoints()
+      + msd_skeleton.GetNumberOfLines() + msd_skeleton.GetNumberOfPolys(),
+      "one primitive per element")
 print("pvbatch plugin test passed")

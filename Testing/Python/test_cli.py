@@ -238,6 +238,48 @@ class CommandLineTest(unittest.TestCase):
         self.assertAlmostEqual(thickness.GetRange()[1], 0.1, delta=0.001)
         self.assertIsNotNone(surface.GetCellData().GetArray("WallId"))
 
+    def test_skeletal_diagram(self):
+        # A dumbbell (balls of radius 0.25, 1.2 pole to pole, neck 0.1): a
+        # few skeletal elements along its axis cover it within 0.5%.
+        writer = vtk.vtkXMLPolyDataWriter()
+        source = medialaxis.vtkAnalyticShapeSource()
+        source.SetShapeToDumbbell()
+        source.SetLength(1.2)
+        source.SetRadius(0.25)
+        source.SetMinorRadius(0.1)
+        writer.SetInputConnection(source.GetOutputPort())
+        writer.SetFileName(self.path("dumbbell.vtp"))
+        self.assertEqual(writer.Write(), 1)
+        out = self.path("out")
+        report = self.path("report.json")
+        result = run("--samples", "5000", "--target", "100", "--skeletal-diagram", "20",
+                     "--report", report, self.path("dumbbell.vtp"), out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("skeletal diagram:", result.stdout)
+        with open(report) as f:
+            data = json.load(f)
+        diagram = data["skeletal_diagram"]
+        self.assertGreaterEqual(diagram["vertices"], 2)
+        self.assertLessEqual(diagram["vertices"] + diagram["edges"] + diagram["triangles"], 20)
+        self.assertLessEqual(diagram["error"], 0.005)
+        self.assertEqual(diagram["failed_elements"], 0)
+        self.assertGreater(data["seconds"]["SkeletalDiagram"], 0.0)
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(os.path.join(out, "primitives.vtp"))
+        reader.Update()
+        element_type = reader.GetOutput().GetCellData().GetArray("ElementType")
+        self.assertEqual(element_type.GetRange()[0], 0)
+        self.assertEqual(reader.GetOutput().GetPointData().GetArray("Radius").GetNumberOfTuples(),
+                         reader.GetOutput().GetNumberOfPoints())
+        skeleton = vtk.vtkXMLPolyDataReader()
+        skeleton.SetFileName(os.path.join(out, "skeleton.vtp"))
+        skeleton.Update()
+        self.assertEqual(skeleton.GetOutput().GetNumberOfPoints(), diagram["vertices"])
+        # A count that is no whole number is refused.
+        refused = run("--skeletal-diagram", "0", self.path("dumbbell.vtp"), out)
+        self.assertNotEqual(refused.returncode, 0)
+        self.assertIn("--skeletal-diagram must be a whole number", refused.stderr)
+
     def test_fillets(self):
         # A box with rounded edges (radius 0.1, side 2): 12 fillets, each a
         # centre line of length 1.8 with radius 0.1.

@@ -294,6 +294,20 @@ PrimitiveTemplate MakeTriangleTemplate(
   return shape;
 }
 
+PrimitiveTemplate MakeElementTemplate(SkeletalElement element, const std::array<Point3, 3>& corners,
+  int vertexSubdivisions, int around, double spacing)
+{
+  switch (element)
+  {
+    case SkeletalElement::Vertex:
+      return MakeVertexTemplate(corners[0], vertexSubdivisions);
+    case SkeletalElement::Edge:
+      return MakeEdgeTemplate(corners[0], corners[1], around, spacing);
+    default:
+      return MakeTriangleTemplate(corners[0], corners[1], corners[2], around, spacing);
+  }
+}
+
 std::vector<Point3> PrimitivePoints(
   const PrimitiveTemplate& shape, const std::vector<double>& radius)
 {

@@ -10,6 +10,7 @@
 #include "Geometry/Vec3.h"
 #include "Mesh/PolygonMesh.h"
 
+#include <array>
 #include <vector>
 
 namespace medialaxis
@@ -51,6 +52,11 @@ PrimitiveTemplate MakeEdgeTemplate(const Point3& a, const Point3& b, int around,
 /// template. Throws std::invalid_argument for a degenerate triangle.
 PrimitiveTemplate MakeTriangleTemplate(
   const Point3& a, const Point3& b, const Point3& c, int around, double spacing);
+
+/// The template of an element of the given kind from its corners (the
+/// first one, two or three), with the resolutions above.
+PrimitiveTemplate MakeElementTemplate(SkeletalElement element, const std::array<Point3, 3>& corners,
+  int vertexSubdivisions, int around, double spacing);
 
 /// The radius of the template's vertices at which they become the
 /// primitive's surface: Base + radius * Direction.

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A sparse skeleton of a shape with one generalized primitive per element
+// (Medial Skeletal Diagram, paper 004, section 5.1, without its global
+// optimisation): sites chosen on a simplified medial mesh, the skeleton as
+// the dual of their Voronoi diagram restricted to that mesh (geodesic along
+// its edges), a primitive fitted to each vertex, edge and triangle, and new
+// sites inserted where the surface lies farthest from the primitives' union
+// until it is within MaximumError everywhere or MaximumElements is reached.
+#ifndef medialaxis_SkeletalDiagram_h
+#define medialaxis_SkeletalDiagram_h
+
+#include "Mesh/MedialMesh.h"
+#include "Mesh/PolygonMesh.h"
+#include "Skeletal/PrimitiveFit.h"
+#include "Skeletal/PrimitiveTemplate.h"
+
+#include <functional>
+#include <vector>
+
+namespace medialaxis
+{
+struct SkeletalDiagramOptions
+{
+  /// Sites to start from, spread by farthest-point selection along the
+  /// medial mesh (the first: its largest sphere).
+  int InitialSites = 1;
+  /// Elements (vertices + edges + triangles) the diagram may have.
+  int MaximumElements = 100;
+  /// Stop once every surface point lies within this fraction of the
+  /// bounding-box diagonal of the primitives' union.
+  double MaximumError = 0.005;
+  /// Templates: directions round a circle, the vertex template's
+  /// subdivisions, the spacing of base points (fraction of the diagonal).
+  int AngularResolution = 32;
+  int VertexSubdivisions = 3;
+  double Spacing = 0.02;
+  PrimitiveFitOptions Fit;
+  /// Called with a fraction in [0, 1] (of MaximumElements reached);
+  /// returning false stops with the diagram as it is.
+  std::function<bool(double)> Progress;
+};
+
+struct SkeletalDiagram
+{
+  /// The skeleton: its vertices are medial vertices (Sites).
+  std::vector<Index> Sites;
+  std::vector<Point3> Points;
+  std::vector<std::array<Index, 2>> Edges;
+  std::vector<Triangle> Triangles;
+  /// One primitive per element: vertices, then edges, then triangles. A
+  /// primitive whose element leaves the surface has an empty fit.
+  std::vector<PrimitiveTemplate> Templates;
+  std::vector<FittedPrimitive> Primitives;
+  /// Distance from the surface points to the primitives' union: largest
+  /// and mean, absolute; and the bounding-box diagonal.
+  double Error = 0.0, MeanError = 0.0, Diagonal = 0.0;
+  /// Sites inserted after the initial ones; elements without a primitive.
+  int Insertions = 0;
+  int FailedElements = 0;
+  bool Aborted = false;
+
+  std::size_t NumberOfElements() const
+  {
+    return this->Points.size() + this->Edges.size() + this->Triangles.size();
+  }
+};
+
+/// Builds the diagram of the closed `surface` (outward) from its simplified
+/// medial mesh. Deterministic. Throws std::invalid_argument for an empty
+/// medial mesh.
+SkeletalDiagram BuildSkeletalDiagram(const TriangleMesh& surface, const MedialMesh& medial,
+  const SkeletalDiagramOptions& options = SkeletalDiagramOptions());
+}
+
+#endif

@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vtkMedialSkeletalDiagram.h"
+
+#include "Skeletal/SkeletalDiagram.h"
+#include "vtkMedialMeshConversion.h"
+#include "vtkPrimitiveCollection.h"
+#include "vtkSurfacePreparation.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataObject.h"
+#include "vtkDemandDrivenPipeline.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPartitionedDataSetCollection.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <stdexcept>
+#include <string>
+
+vtkStandardNewMacro(vtkMedialSkeletalDiagram);
+
+vtkMedialSkeletalDiagram::vtkMedialSkeletalDiagram()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkPolyData* vtkMedialSkeletalDiagram::GetSkeleton()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(0));
+}
+
+vtkPartitionedDataSetCollection* vtkMedialSkeletalDiagram::GetPrimitives()
+{
+  return vtkPartitionedDataSetCollection::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+int vtkMedialSkeletalDiagram::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkMedialSkeletalDiagram::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(
+    vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkPolyData" : "vtkPartitionedDataSetCollection");
+  return 1;
+}
+
+vtkTypeBool vtkMedialSkeletalDiagram::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+  {
+    return this->RequestData(request, inputVector, outputVector);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+int vtkMedialSkeletalDiagram::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* surfaceIn = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* medialIn = vtkPolyData::GetData(inputVector[1]);
+  vtkPolyData* skeleton = vtkPolyData::GetData(outputVector, 0);
+  auto* primitives = vtkPartitionedDataSetCollection::GetData(outputVector, 1);
+  skeleton->Initialize();
+  primitives->Initialize();
+  this->ReachedError = 0.0;
+  this->NumberOfElements = 0;
+
+  medialaxis::TriangleMesh surface;
+  const auto report = medialaxis::PrepareSurfaceMesh(surfaceIn, surface);
+  if (!report.Ok())
+  {
+    vtkErrorMacro(<< "input port 0: " << report.Error);
+    return 0;
+  }
+  medialaxis::MedialMesh medial;
+  std::string problem = medialIn ? medialaxis::PolyDataToMedialMesh(medialIn, medial)
+                                 : "no medial mesh (connect the surface's simplified MAT)";
+  if (problem.empty())
+  {
+    problem = medialaxis::ValidateMedialMesh(medial).Message;
+  }
+  if (problem.empty() && medial.NumberOfVertices() == 0)
+  {
+    problem = "the medial mesh is empty";
+  }
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< "input port 1: " << problem);
+    return 0;
+  }
+
+  medialaxis::SkeletalDiagramOptions options;
+  options.MaximumError = this->MaximumError;
+  options.MaximumElements = this->MaximumElements;
+  options.InitialSites = this->InitialSites;
+  options.AngularResolution = this->AngularResolution;
+  options.VertexSubdivisions = this->VertexSubdivisions;
+  options.Spacing = this->Spacing;
+  options.Progress = [this](double amount)
+  {
+    this->UpdateProgress(0.95 * amount);
+    return !this->GetAbortExecute();
+  };
+  const medialaxis::SkeletalDiagram diagram =
+    medialaxis::BuildSkeletalDiagram(surface, medial, options);
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkIdTypeArray> vertexIds;
+  vertexIds->SetName("MedialVertexId");
+  vtkNew<vtkDoubleArray> radius;
+  radius->SetName(medialaxis::RadiusArrayName);
+  for (std::size_t v = 0; v < diagram.Points.size(); ++v)
+  {
+    points->InsertNextPoint(diagram.Points[v].data());
+    vertexIds->InsertNextValue(diagram.Sites[v]);
+    radius->InsertNextValue(medial.Radii[diagram.Sites[v]]);
+  }
+  vtkNew<vtkCellArray> lines, triangles;
+  for (const auto& e : diagram.Edges)
+  {
+    const vtkIdType ids[2] = { e[0], e[1] };
+    lines->InsertNextCell(2, ids);
+  }
+  for (const auto& t : diagram.Triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    triangles->InsertNextCell(3, ids);
+  }
+  skeleton->SetPoints(points);
+  skeleton->SetLines(lines);
+  skeleton->SetPolys(triangles);
+  skeleton->GetPointData()->AddArray(vertexIds);
+  skeleton->GetPointData()->AddArray(radius);
+  skeleton->GetPointData()->SetActiveScalars(medialaxis::RadiusArrayName);
+  const double diagonal = diagram.Diagonal > 0.0 ? diagram.Diagonal : 1.0;
+  medialaxis::AddFieldDouble(skeleton, "Error", diagram.Error / diagonal);
+  medialaxis::AddFieldDouble(skeleton, "MeanError", diagram.MeanError / diagonal);
+  medialaxis::AddFieldValue(skeleton, "Insertions", diagram.Insertions);
+  medialaxis::AddFieldValue(skeleton, "FailedElements", diagram.FailedElements);
+
+  primitives->SetNumberOfPartitionedDataSets(static_cast<unsigned int>(diagram.Primitives.size()));
+  for (std::size_t e = 0; e < diagram.Primitives.size(); ++e)
+  {
+    const std::size_t vertices = diagram.Points.size(), edges = diagram.Edges.size();
+    medialaxis::SkeletalElement type;
+    vtkIdType id;
+    std::string name;
+    if (e < vertices)
+    {
+      type = medialaxis::SkeletalElement::Vertex;
+      id = static_cast<vtkIdType>(e);
+      name = "vertex " + std::to_string(e);
+    }
+    else if (e < vertices + edges)
+    {
+      type = medialaxis::SkeletalElement::Edge;
+      id = static_cast<vtkIdType>(e - vertices);
+      const auto& edge = diagram.Edges[e - vertices];
+      name = "edge " + std::to_string(edge[0]) + "-" + std::to_string(edge[1]);
+    }
+    else
+    {
+      type = medialaxis::SkeletalElement::Triangle;
+      id = static_cast<vtkIdType>(e - vertices - edges);
+      name = "triangle " + std::to_string(id);
+    }
+    medialaxis::SetPrimitive(primitives, static_cast<unsigned int>(e),
+      medialaxis::PrimitiveMesh(diagram.Templates[e], diagram.Primitives[e]), type, id, name);
+  }
+  this->ReachedError = diagram.Error / diagonal;
+  this->NumberOfElements = static_cast<vtkIdType>(diagram.NumberOfElements());
+  if (diagram.FailedElements > 0)
+  {
+    vtkWarningMacro(<< diagram.FailedElements << " of " << diagram.NumberOfElements()
+                    << " skeletal elements leave the surface and have no primitive (a skeletal "
+                       "edge or triangle cutting across a concave part)");
+  }
+  if (diagram.Error > options.MaximumError * diagonal && !diagram.Aborted)
+  {
+    vtkWarningMacro(<< "the surface lies up to " << 100.0 * diagram.Error / diagonal
+                    << "% of the diagonal from the primitives, more than MaximumError ("
+                    << 100.0 * options.MaximumError << "%), with " << diagram.NumberOfElements()
+                    << " elements: raise MaximumElements to add sites");
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkMedialSkeletalDiagram::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "MaximumElements: " << this->MaximumElements << "\n";
+  os << indent << "InitialSites: " << this->InitialSites << "\n";
+  os << indent << "AngularResolution: " << this->AngularResolution << "\n";
+  os << indent << "VertexSubdivisions: " << this->VertexSubdivisions << "\n";
+  os << indent << "Spacing: " << this->Spacing << "\n";
+  os << indent << "ReachedError: " << this->ReachedError << "\n";
+  os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
+}

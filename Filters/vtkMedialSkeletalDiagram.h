@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+/**
+ * @class   vtkMedialSkeletalDiagram
+ * @brief   A sparse skeleton of a shape with a generalized primitive per element
+ *
+ * The Medial Skeletal Diagram (Guo et al.) stands for a shape by a few dozen
+ * skeletal vertices, edges and triangles, each carrying a generalized
+ * enveloping primitive (a radius per direction; see
+ * vtkGeneralizedPrimitiveFitter). This filter builds one from the shape's
+ * simplified medial mesh: sites are chosen among its vertices (the largest
+ * sphere, then InitialSites - 1 more by farthest-point selection along its
+ * edges), the skeleton is the dual of their Voronoi cells on the medial mesh
+ * (a skeletal vertex per site, an edge where two cells meet along a medial
+ * edge, a triangle where three meet on a medial triangle), a primitive is
+ * fitted to every element, and a site is added where the surface lies
+ * farthest from the primitives' union, until every surface point is within
+ * MaximumError (fraction of the bounding-box diagonal) of it or one more
+ * site would take the diagram past MaximumElements. The paper's global
+ * optimisation of the sites and its exact refinement are not done.
+ *
+ * Inputs: port 0 the closed surface; port 1 its simplified medial mesh
+ * (point data `Radius`), e.g. vtkStructuralMedialAxis with a few hundred
+ * spheres.
+ *
+ * Output 0: the skeleton: its vertices (point data `MedialVertexId`,
+ * `Radius`: the medial sphere's), lines for its edges, triangles; field data
+ * `Error` and `MeanError` (surface to primitives, fractions of the
+ * diagonal), `Insertions` and `FailedElements` (elements whose primitive
+ * leaves the surface and is left out). Output 1: the primitives as
+ * vtkGeneralizedPrimitiveFitter gives them (vertices, then edges, then
+ * triangles in the order of output 0's points and cells).
+ */
+#ifndef vtkMedialSkeletalDiagram_h
+#define vtkMedialSkeletalDiagram_h
+
+#include "vtkAlgorithm.h"
+#include "vtkMedialAxisFiltersModule.h"
+
+class vtkPartitionedDataSetCollection;
+class vtkPolyData;
+
+class VTKMEDIALAXISFILTERS_EXPORT vtkMedialSkeletalDiagram : public vtkAlgorithm
+{
+public:
+  static vtkMedialSkeletalDiagram* New();
+  vtkTypeMacro(vtkMedialSkeletalDiagram, vtkAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The simplified medial mesh of the surface on port 0.
+  void SetMedialAxisConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+
+  vtkPolyData* GetSkeleton();
+  vtkPartitionedDataSetCollection* GetPrimitives();
+
+  ///@{
+  /// Largest distance of the surface from the primitives' union, as a
+  /// fraction of the bounding-box diagonal. Default 0.005.
+  vtkSetClampMacro(MaximumError, double, 1e-5, 1.0);
+  vtkGetMacro(MaximumError, double);
+  ///@}
+
+  ///@{
+  /// Most elements (vertices + edges + triangles). Default 100.
+  vtkSetClampMacro(MaximumElements, int, 1, 1000000);
+  vtkGetMacro(MaximumElements, int);
+  ///@}
+
+  ///@{
+  /// Sites to start from. Default 1.
+  vtkSetClampMacro(InitialSites, int, 1, 100000);
+  vtkGetMacro(InitialSites, int);
+  ///@}
+
+  ///@{
+  /// Template resolutions, as for vtkGeneralizedPrimitiveFitter: directions
+  /// round a circle (32), the vertex template's subdivisions (3) and the
+  /// spacing of base points as a fraction of the diagonal (0.02).
+  vtkSetClampMacro(AngularResolution, int, 8, 256);
+  vtkGetMacro(AngularResolution, int);
+  vtkSetClampMacro(VertexSubdivisions, int, 0, 6);
+  vtkGetMacro(VertexSubdivisions, int);
+  vtkSetClampMacro(Spacing, double, 1e-4, 1.0);
+  vtkGetMacro(Spacing, double);
+  ///@}
+
+  ///@{
+  /// The last run: the error reached (fraction of the diagonal) and the
+  /// number of elements.
+  vtkGetMacro(ReachedError, double);
+  vtkGetMacro(NumberOfElements, vtkIdType);
+  ///@}
+
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+protected:
+  vtkMedialSkeletalDiagram();
+  ~vtkMedialSkeletalDiagram() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+
+  double MaximumError = 0.005;
+  int MaximumElements = 100;
+  int InitialSites = 1;
+  int AngularResolution = 32;
+  int VertexSubdivisions = 3;
+  double Spacing = 0.02;
+  double ReachedError = 0.0;
+  vtkIdType NumberOfElements = 0;
+
+private:
+  vtkMedialSkeletalDiagram(const vtkMedialSkeletalDiagram&) = delete;
+  void operator=(const vtkMedialSkeletalDiagram&) = delete;
+};
+
+#endif

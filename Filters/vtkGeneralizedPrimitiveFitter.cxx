@@ -8,21 +8,12 @@
 #include "vtkPrimitiveCollection.h"
 #include "vtkSurfacePreparation.h"
 
-#include "vtkCellArray.h"
-#include "vtkCompositeDataSet.h"
-#include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkIdList.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPartitionedDataSet.h"
 #include "vtkPartitionedDataSetCollection.h"
-#include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 
 #include <tbb/blocked_range.h>

@@ -70,6 +70,12 @@ struct PolylineFoot
   Point3 Foot;
 };
 
+// The vertex one step (+1 or -1) from k on a closed line of n vertices.
+std::size_t StepAlong(std::size_t k, int step, std::size_t n)
+{
+  return step > 0 ? (k + 1) % n : (k + n - 1) % n;
+}
+
 PolylineFoot NearestOnPolyline(const std::vector<Point3>& line, bool closed, const Point3& p)
 {
   const std::size_t n = line.size();
@@ -252,7 +258,7 @@ void RefineCentreLine(
         {
           break;
         }
-        const std::size_t next = (k + n + static_cast<std::size_t>(step + 1) - 1) % n;
+        const std::size_t next = StepAlong(k, step, n);
         along += Norm(centres[next] - centres[k]);
         k = next;
         if (k == i ||
@@ -314,7 +320,7 @@ void RefineCentreLine(
       {
         return -1;
       }
-      const std::size_t next = (k + n + static_cast<std::size_t>(step + 1) - 1) % n;
+      const std::size_t next = StepAlong(k, step, n);
       distance += Norm(centres[next] - centres[k]);
       k = next;
       if (trusted[k])

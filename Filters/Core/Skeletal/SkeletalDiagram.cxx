@@ -92,11 +92,10 @@ SkeletalDiagram BuildSkeletalDiagram(
   {
     throw std::invalid_argument("skeletal diagram: the medial mesh has no vertex");
   }
-  SkeletalDiagram diagram;
   const auto box = BoundingBox(surface.Points);
-  diagram.Diagonal = Norm(box.second - box.first);
-  const double spacing = options.Spacing * diagram.Diagonal;
-  const double bound = options.MaximumError * diagram.Diagonal;
+  const double diagonal = Norm(box.second - box.first);
+  const double spacing = options.Spacing * diagonal;
+  const double bound = options.MaximumError * diagonal;
   const TriangleLocator locator(surface);
   const Graph graph = MedialGraph(medial);
 
@@ -151,7 +150,7 @@ SkeletalDiagram BuildSkeletalDiagram(
     // The skeleton: the dual of the sites' cells on the medial mesh.
     NearestSites(graph, sites, owner, distance);
     SkeletalDiagram current;
-    current.Diagonal = diagram.Diagonal;
+    current.Diagonal = diagonal;
     current.Sites = sites;
     current.Insertions =
       static_cast<int>(sites.size()) - std::min<int>(options.InitialSites, static_cast<int>(n));
@@ -259,7 +258,7 @@ SkeletalDiagram BuildSkeletalDiagram(
     double sum = 0.0;
     for (double g : gap)
     {
-      sum += std::isfinite(g) ? g : diagram.Diagonal;
+      sum += std::isfinite(g) ? g : diagonal;
     }
     current.MeanError = sum / static_cast<double>(gap.size());
 

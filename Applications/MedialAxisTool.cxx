@@ -160,9 +160,12 @@ Options:
                         the MAT: write skeleton.vtp (its vertices, edges and
                         triangles) and primitives.vtp (a generalized
                         primitive, a radius per direction, per element; cell
-                        data ElementType and ElementId) until
-                        the surface is within 0.5% of the diagonal of them;
-                        the report gives the counts and the error reached
+                        data ElementType and ElementId) until the surface is
+                        within 0.5% of the diagonal of them, and
+                        reconstruction.vtp (their union as one closed
+                        surface); the report gives the counts and the error
+                        reached (with --error also the reconstruction's
+                        two-sided distances)
   --error               measure the two-sided Hausdorff distance between the
                         surface and the envelope (% of the bounding-box
                         diagonal) and write distance.vtp (the surface with
@@ -854,6 +857,9 @@ int main(int argc, char** argv)
     const std::string primitivesPath = (dir / "primitives.vtp").string();
     WriteVtp(JoinPrimitives(diagram->GetPrimitives()), primitivesPath);
     written.push_back(primitivesPath);
+    const std::string reconstructionPath = (dir / "reconstruction.vtp").string();
+    WriteVtp(diagram->GetReconstruction(), reconstructionPath);
+    written.push_back(reconstructionPath);
   }
   if (!o.Screenshot.empty())
   {
@@ -867,27 +873,53 @@ int main(int argc, char** argv)
     }
     written.push_back(o.Screenshot);
   }
-  double hausdorff = -1.0, hausdorffPercent = -1.0, toEnvelope = -1.0, toSurface = -1.0;
-  double errorSeconds = 0.0;
-  if (o.Error)
+  // Two-sided distances between the surface and a reconstruction of it (the
+  // MAT's envelope, or the skeletal diagram's union), absolute.
+  struct Distances
   {
-    vtkNew<vtkMedialReconstructionError> error;
+    double Hausdorff = -1.0, HausdorffPercent = -1.0, ToEnvelope = -1.0, ToSurface = -1.0,
+           Mean = -1.0, MeanPercent = -1.0;
+  };
+  auto measure = [&](vtkPolyData* reconstruction, const char* what, double& seconds,
+                   vtkMedialReconstructionError* error, Distances& d)
+  {
     error->SetInputConnection(0, validator->GetOutputPort());
-    error->SetInputData(1, mat);
+    error->SetInputData(1, reconstruction);
     error->SetNumberOfThreads(o.Threads);
     ProgressBar errorBar{ "error" };
-    if (!UpdateStage(error, "error measurement", showProgress ? &errorBar : nullptr, errorSeconds))
+    if (!UpdateStage(error, what, showProgress ? &errorBar : nullptr, seconds))
+    {
+      return false;
+    }
+    d.Hausdorff = error->GetHausdorff();
+    d.HausdorffPercent = error->GetHausdorffPercent();
+    d.ToEnvelope = error->GetHausdorffSurfaceToEnvelope();
+    d.ToSurface = error->GetHausdorffEnvelopeToSurface();
+    d.Mean = FieldValue(error->GetOutput(0), "Mean");
+    d.MeanPercent = FieldValue(error->GetOutput(0), "MeanPercent");
+    return true;
+  };
+  Distances matDistances, diagramDistances;
+  double errorSeconds = 0.0, diagramErrorSeconds = 0.0;
+  vtkNew<vtkMedialReconstructionError> error, diagramError;
+  if (o.Error)
+  {
+    if (!measure(mat, "error measurement", errorSeconds, error, matDistances))
     {
       return ComputationFailed;
     }
-    hausdorff = error->GetHausdorff();
-    hausdorffPercent = error->GetHausdorffPercent();
-    toEnvelope = error->GetHausdorffSurfaceToEnvelope();
-    toSurface = error->GetHausdorffEnvelopeToSurface();
     const std::string path = (dir / "distance.vtp").string();
     WriteVtp(error->GetOutput(0), path);
     written.push_back(path);
+    if (o.SkeletalDiagram > 0 && diagram->GetReconstruction()->GetNumberOfPolys() > 0 &&
+      !measure(diagram->GetReconstruction(), "skeletal diagram error measurement",
+        diagramErrorSeconds, diagramError, diagramDistances))
+    {
+      return ComputationFailed;
+    }
   }
+  const double hausdorff = matDistances.Hausdorff, hausdorffPercent = matDistances.HausdorffPercent,
+               toEnvelope = matDistances.ToEnvelope, toSurface = matDistances.ToSurface;
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -943,7 +975,13 @@ int main(int argc, char** argv)
     std::cout << "  skeletal diagram: " << skeleton->GetNumberOfPoints() << " vertices, "
               << skeleton->GetNumberOfLines() << " edges, " << skeleton->GetNumberOfPolys()
               << " triangles, surface within " << 100.0 * diagram->GetReachedError()
-              << "% of the diagonal of the primitives\n";
+              << "% of the diagonal of the primitives";
+    if (diagramDistances.Hausdorff >= 0.0)
+    {
+      std::cout << ", reconstruction: two-sided Hausdorff " << diagramDistances.HausdorffPercent
+                << "%, mean " << diagramDistances.MeanPercent << "%";
+    }
+    std::cout << "\n";
   }
   for (const std::string& path : written)
   {
@@ -993,7 +1031,8 @@ int main(int argc, char** argv)
          << ", \"Envelope\": " << envelopeSeconds << ", \"Fillets\": " << filletSeconds
          << ", \"Structure\": " << structureSeconds << ", \"MidSurface\": " << midSurfaceSeconds
          << ", \"SkeletalDiagram\": " << diagramSeconds << ", \"Error\": " << errorSeconds
-         << ", \"wall\": " << seconds << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
+         << ", \"SkeletalDiagramError\": " << diagramErrorSeconds << ", \"wall\": " << seconds
+         << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
          << ",\n  \"counts\": {\"sites\": " << FieldValue(mat, "Sites")
          << ", \"initial_vertices\": " << FieldValue(mat, "InitialVertices")
          << ", \"initial_triangles\": " << FieldValue(mat, "InitialTriangles")
@@ -1060,14 +1099,27 @@ int main(int argc, char** argv)
            << ", \"triangles\": " << skeleton->GetNumberOfPolys()
            << ", \"error\": " << diagram->GetReachedError()
            << ", \"mean_error\": " << FieldValue(skeleton, "MeanError")
-           << ", \"failed_elements\": " << FieldValue(skeleton, "FailedElements") << "}";
+           << ", \"failed_elements\": " << FieldValue(skeleton, "FailedElements")
+           << ", \"continuous_parameters\": " << FieldValue(skeleton, "ContinuousParameters");
+      if (diagramDistances.Hausdorff >= 0.0)
+      {
+        json << ", \"hausdorff\": {\"two_sided\": " << diagramDistances.Hausdorff
+             << ", \"two_sided_percent\": " << diagramDistances.HausdorffPercent
+             << ", \"surface_to_envelope\": " << diagramDistances.ToEnvelope
+             << ", \"envelope_to_surface\": " << diagramDistances.ToSurface
+             << ", \"mean_two_sided\": " << diagramDistances.Mean
+             << ", \"mean_two_sided_percent\": " << diagramDistances.MeanPercent << "}";
+      }
+      json << "}";
     }
     if (o.Error)
     {
       json << ",\n  \"hausdorff\": {\"two_sided\": " << hausdorff
            << ", \"two_sided_percent\": " << hausdorffPercent
            << ", \"surface_to_envelope\": " << toEnvelope
-           << ", \"envelope_to_surface\": " << toSurface << "}";
+           << ", \"envelope_to_surface\": " << toSurface
+           << ", \"mean_two_sided\": " << matDistances.Mean
+           << ", \"mean_two_sided_percent\": " << matDistances.MeanPercent << "}";
     }
     json << "\n}\n";
     std::ofstream file(o.Report);

@@ -147,6 +147,7 @@ int vtkGeneralizedPrimitiveFitter::RequestData(
   medialaxis::PrimitiveFitOptions options;
   options.Smoothness = this->Smoothness;
   options.Progressions = this->Progressions;
+  options.RefinementTolerance = this->RefinementTolerance * std::sqrt(diagonal2);
   std::vector<vtkSmartPointer<vtkPolyData>> meshes(elements.size());
   std::vector<std::string> errors(elements.size());
   const int around = this->AngularResolution;
@@ -169,7 +170,7 @@ int vtkGeneralizedPrimitiveFitter::RequestData(
         continue;
       }
       const medialaxis::FittedPrimitive fit =
-        medialaxis::FitPrimitive(surface, locator, shape, options);
+        medialaxis::FitPrimitiveRefined(surface, locator, shape, options);
       errors[e] = fit.Error;
       meshes[e] = PrimitiveMesh(shape, fit);
     }
@@ -223,5 +224,6 @@ void vtkGeneralizedPrimitiveFitter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Spacing: " << this->Spacing << "\n";
   os << indent << "Smoothness: " << this->Smoothness << "\n";
   os << indent << "Progressions: " << this->Progressions << "\n";
+  os << indent << "RefinementTolerance: " << this->RefinementTolerance << "\n";
   os << indent << "NumberOfFailedElements: " << this->NumberOfFailedElements << "\n";
 }

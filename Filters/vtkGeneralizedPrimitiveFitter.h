@@ -17,9 +17,14 @@
  * directions go round a circle. Each direction's radius grows from the
  * element's inscribed distance towards the surface and never past its ray's
  * first exit from it, the radius function kept smooth by the template's graph
- * Laplacian (weight Smoothness), over Progressions steps of growth. The
- * primitives therefore lie inside the surface; their union is the shape as
- * far as the skeleton reaches it.
+ * Laplacian (weight Smoothness), over Progressions steps of growth. Where
+ * the surface cuts in between two directions (a narrow gap, a reflex edge)
+ * the primitive would pass it there: its template is then split where
+ * surface points lie inside the primitive deeper than RefinementTolerance
+ * (or the radius between two directions passes the surface by more) and
+ * fitted again, a few times. The primitives therefore lie inside the
+ * surface (within that tolerance); their union is the shape as far as the
+ * skeleton reaches it.
  *
  * Inputs: port 0 the closed surface; port 1 the skeleton (vtkPolyData with
  * vertices, lines and triangles: a simplified medial mesh, a `.ma` file's, or
@@ -87,6 +92,14 @@ public:
   ///@}
 
   ///@{
+  /// How far, as a fraction of the surface's bounding-box diagonal, a
+  /// primitive may pass the surface between its directions before its
+  /// template is refined there (default 0.0025; 0: never refine).
+  vtkSetClampMacro(RefinementTolerance, double, 0.0, 1.0);
+  vtkGetMacro(RefinementTolerance, double);
+  ///@}
+
+  ///@{
   /// Elements whose primitive could not be fitted (outside the surface) in
   /// the last run.
   vtkGetMacro(NumberOfFailedElements, vtkIdType);
@@ -104,6 +117,7 @@ protected:
   double Spacing = 0.02;
   double Smoothness = 1.0;
   int Progressions = 20;
+  double RefinementTolerance = 0.0025;
   vtkIdType NumberOfFailedElements = 0;
 
 private:

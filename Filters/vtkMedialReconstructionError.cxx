@@ -3,6 +3,7 @@
 
 #include "Envelope/EnvelopeDistance.h"
 #include "Envelope/ReconstructionError.h"
+#include "Mesh/TriangleAdjacency.h"
 #include "Support/Parallel.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkSurfacePreparation.h"
@@ -70,6 +71,29 @@ void AddStatistics(vtkPolyData* output, const ReconstructionErrorResult& r)
   farthest->InsertNextTuple(r.EnvelopeFarthestPoint.data());
   output->GetFieldData()->AddArray(farthest);
 }
+
+// The triangles of a closed surface (polygons fanned), facing outward.
+TriangleMesh OutwardTriangles(vtkPolyData* input)
+{
+  TriangleMesh mesh;
+  mesh.Points.resize(static_cast<std::size_t>(input->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    input->GetPoint(i, mesh.Points[i].data());
+  }
+  vtkIdType npts = 0;
+  const vtkIdType* ids = nullptr;
+  vtkCellArray* polys = input->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+  {
+    for (vtkIdType k = 2; k < npts; ++k)
+    {
+      mesh.Triangles.push_back({ ids[0], ids[k - 1], ids[k] });
+    }
+  }
+  OrientOutward(mesh);
+  return mesh;
+}
 }
 
 vtkMedialReconstructionError::vtkMedialReconstructionError()
@@ -103,32 +127,32 @@ int vtkMedialReconstructionError::RequestData(
     vtkErrorMacro(<< "cannot measure the reconstruction error: " << report.Error);
     return 0;
   }
+  // Port 1: a medial mesh (point data Radius), or any closed surface that
+  // reconstructs the input (e.g. a skeletal diagram's union).
+  const bool reconstructed = medialInput && medialInput->GetNumberOfPoints() > 0 &&
+    !medialInput->GetPointData()->GetArray(RadiusArrayName) && medialInput->GetNumberOfPolys() > 0;
   MedialMesh medial;
-  const std::string error = PolyDataToMedialMesh(medialInput, medial);
-  if (!error.empty())
+  TriangleMesh reconstruction;
+  if (reconstructed)
   {
-    vtkErrorMacro(<< "cannot measure the reconstruction error: input port 1: " << error);
-    return 0;
+    reconstruction = OutwardTriangles(medialInput);
   }
-  if (medial.NumberOfVertices() == 0)
+  else
   {
-    vtkErrorMacro(<< "cannot measure the reconstruction error: the medial mesh on input port 1 "
-                     "has no points (connect a medial mesh with point data 'Radius')");
-    return 0;
+    const std::string error = PolyDataToMedialMesh(medialInput, medial);
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< "cannot measure the reconstruction error: input port 1: " << error);
+      return 0;
+    }
+    if (medial.NumberOfVertices() == 0)
+    {
+      vtkErrorMacro(<< "cannot measure the reconstruction error: the medial mesh on input port 1 "
+                       "has no points (connect a medial mesh with point data 'Radius')");
+      return 0;
+    }
   }
-  TriangleMesh surface;
-  surface.Points.resize(static_cast<std::size_t>(prepared->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < prepared->GetNumberOfPoints(); ++i)
-  {
-    prepared->GetPoint(i, surface.Points[i].data());
-  }
-  vtkIdType npts = 0;
-  const vtkIdType* ids = nullptr;
-  vtkCellArray* polys = prepared->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
-  {
-    surface.Triangles.push_back({ ids[0], ids[1], ids[2] });
-  }
+  const TriangleMesh surface = OutwardTriangles(prepared); // prepared: triangles, outward
   this->UpdateProgress(0.05);
 
   ReconstructionErrorOptions options;
@@ -144,6 +168,10 @@ int vtkMedialReconstructionError::RequestData(
   const ReconstructionErrorResult result = RunWithThreads(this->NumberOfThreads,
     [&]
     {
+      if (reconstructed)
+      {
+        return ComputeSurfaceDistanceError(surface, reconstruction, options);
+      }
       const MedialEnvelope envelope(medial);
       if (envelope.Empty())
       {
@@ -186,8 +214,10 @@ int vtkMedialReconstructionError::RequestData(
     points->SetPoint(i, result.EnvelopeSamples[i].data());
     offsets->SetValue(i, i);
     connectivity->SetValue(i, i);
-    kind->SetValue(i, static_cast<unsigned char>(result.EnvelopeSamplePrimitive[i].Kind));
-    primitive->SetValue(i, result.EnvelopeSamplePrimitive[i].Id);
+    const PrimitiveRef ref =
+      reconstructed ? PrimitiveRef{ PrimitiveKind::Sphere, -1 } : result.EnvelopeSamplePrimitive[i];
+    kind->SetValue(i, static_cast<unsigned char>(ref.Kind));
+    primitive->SetValue(i, ref.Id);
   }
   offsets->SetValue(ns, ns);
   vtkNew<vtkCellArray> verts;
@@ -195,8 +225,11 @@ int vtkMedialReconstructionError::RequestData(
   samplesOutput->SetPoints(points);
   samplesOutput->SetVerts(verts);
   samplesOutput->GetPointData()->AddArray(PointArray("Distance", result.EnvelopeSampleDistance));
-  samplesOutput->GetPointData()->AddArray(kind);
-  samplesOutput->GetPointData()->AddArray(primitive);
+  if (!reconstructed)
+  {
+    samplesOutput->GetPointData()->AddArray(kind);
+    samplesOutput->GetPointData()->AddArray(primitive);
+  }
   samplesOutput->GetPointData()->SetActiveScalars("Distance");
   AddStatistics(samplesOutput, result);
 

@@ -9,6 +9,14 @@
  * medial primitives (balls, cones, slabs; see vtkSlabReconstructor), measured
  * exactly by closed-form distances instead of a remeshed approximation.
  *
+ * Port 1 may instead be any closed surface that reconstructs the input
+ * (polygons and no point data `Radius`): the reconstruction output of
+ * vtkMedialSkeletalDiagram, vtkSlabReconstructor's boundary mode, another
+ * tool's result. It is then the envelope below: distances are to its
+ * triangles (exact, so the lower bounds equal them), `SignedDistance` is
+ * negative inside it, no local search raises the envelope-to-surface
+ * maximum, and the samples output has no `PrimitiveKind` or `PrimitiveId`.
+ *
  * Surface to envelope: at every surface vertex and at NumberOfSamples
  * area-uniform random points on the surface, the distance to the boundary of
  * the envelope. Outside the union it is the smallest closed-form distance to

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkMedialSkeletalDiagram.h"
 
+#include "Skeletal/PrimitiveUnion.h"
 #include "Skeletal/SkeletalDiagram.h"
+#include "vtkDistanceGridContour.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkPrimitiveCollection.h"
 #include "vtkSurfacePreparation.h"
@@ -21,6 +23,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -29,7 +32,7 @@ vtkStandardNewMacro(vtkMedialSkeletalDiagram);
 vtkMedialSkeletalDiagram::vtkMedialSkeletalDiagram()
 {
   this->SetNumberOfInputPorts(2);
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfOutputPorts(3);
 }
 
 vtkPolyData* vtkMedialSkeletalDiagram::GetSkeleton()
@@ -42,6 +45,11 @@ vtkPartitionedDataSetCollection* vtkMedialSkeletalDiagram::GetPrimitives()
   return vtkPartitionedDataSetCollection::SafeDownCast(this->GetOutputDataObject(1));
 }
 
+vtkPolyData* vtkMedialSkeletalDiagram::GetReconstruction()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(2));
+}
+
 int vtkMedialSkeletalDiagram::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
@@ -51,7 +59,7 @@ int vtkMedialSkeletalDiagram::FillInputPortInformation(int, vtkInformation* info
 int vtkMedialSkeletalDiagram::FillOutputPortInformation(int port, vtkInformation* info)
 {
   info->Set(
-    vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkPolyData" : "vtkPartitionedDataSetCollection");
+    vtkDataObject::DATA_TYPE_NAME(), port == 1 ? "vtkPartitionedDataSetCollection" : "vtkPolyData");
   return 1;
 }
 
@@ -72,8 +80,10 @@ int vtkMedialSkeletalDiagram::RequestData(
   vtkPolyData* medialIn = vtkPolyData::GetData(inputVector[1]);
   vtkPolyData* skeleton = vtkPolyData::GetData(outputVector, 0);
   auto* primitives = vtkPartitionedDataSetCollection::GetData(outputVector, 1);
+  vtkPolyData* reconstruction = vtkPolyData::GetData(outputVector, 2);
   skeleton->Initialize();
   primitives->Initialize();
+  reconstruction->Initialize();
   this->ReachedError = 0.0;
   this->NumberOfElements = 0;
 
@@ -110,7 +120,7 @@ int vtkMedialSkeletalDiagram::RequestData(
   options.Spacing = this->Spacing;
   options.Progress = [this](double amount)
   {
-    this->UpdateProgress(0.95 * amount);
+    this->UpdateProgress((this->Reconstruct ? 0.6 : 0.95) * amount);
     return !this->GetAbortExecute();
   };
   const medialaxis::SkeletalDiagram diagram =
@@ -150,6 +160,8 @@ int vtkMedialSkeletalDiagram::RequestData(
   medialaxis::AddFieldDouble(skeleton, "MeanError", diagram.MeanError / diagonal);
   medialaxis::AddFieldValue(skeleton, "Insertions", diagram.Insertions);
   medialaxis::AddFieldValue(skeleton, "FailedElements", diagram.FailedElements);
+  medialaxis::AddFieldValue(
+    skeleton, "ContinuousParameters", static_cast<long long>(diagram.ContinuousParameters()));
 
   primitives->SetNumberOfPartitionedDataSets(static_cast<unsigned int>(diagram.Primitives.size()));
   for (std::size_t e = 0; e < diagram.Primitives.size(); ++e)
@@ -180,6 +192,33 @@ int vtkMedialSkeletalDiagram::RequestData(
     medialaxis::SetPrimitive(primitives, static_cast<unsigned int>(e),
       medialaxis::PrimitiveMesh(diagram.Templates[e], diagram.Primitives[e]), type, id, name);
   }
+  if (this->Reconstruct && !diagram.Aborted)
+  {
+    std::vector<medialaxis::TriangleMesh> pieces;
+    for (std::size_t e = 0; e < diagram.Primitives.size(); ++e)
+    {
+      pieces.push_back(medialaxis::PrimitiveSurface(diagram.Templates[e], diagram.Primitives[e]));
+    }
+    const medialaxis::PrimitiveUnion united(pieces);
+    if (!united.Empty())
+    {
+      const medialaxis::Box& b = united.Bounds();
+      const double spacing = std::max({ b.Hi[0] - b.Lo[0], b.Hi[1] - b.Lo[1], b.Hi[2] - b.Lo[2] }) /
+        this->ReconstructionResolution;
+      const medialaxis::DistanceGrid grid = medialaxis::SamplePrimitiveUnion(united, spacing,
+        [this](double f)
+        {
+          this->UpdateProgress(0.6 + 0.35 * f);
+          return !this->GetAbortExecute();
+        });
+      if (grid.Aborted)
+      {
+        return 1;
+      }
+      medialaxis::TriangleMeshToPolyData(medialaxis::ContourDistanceGrid(grid), reconstruction);
+      medialaxis::AddFieldDouble(reconstruction, "GridSpacing", spacing);
+    }
+  }
   this->ReachedError = diagram.Error / diagonal;
   this->NumberOfElements = static_cast<vtkIdType>(diagram.NumberOfElements());
   if (diagram.FailedElements > 0)
@@ -208,6 +247,8 @@ void vtkMedialSkeletalDiagram::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AngularResolution: " << this->AngularResolution << "\n";
   os << indent << "VertexSubdivisions: " << this->VertexSubdivisions << "\n";
   os << indent << "Spacing: " << this->Spacing << "\n";
+  os << indent << "Reconstruct: " << this->Reconstruct << "\n";
+  os << indent << "ReconstructionResolution: " << this->ReconstructionResolution << "\n";
   os << indent << "ReachedError: " << this->ReachedError << "\n";
   os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
 }

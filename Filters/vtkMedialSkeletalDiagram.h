@@ -25,10 +25,21 @@
  * Output 0: the skeleton: its vertices (point data `MedialVertexId`,
  * `Radius`: the medial sphere's), lines for its edges, triangles; field data
  * `Error` and `MeanError` (surface to primitives, fractions of the
- * diagonal), `Insertions` and `FailedElements` (elements whose primitive
- * leaves the surface and is left out). Output 1: the primitives as
+ * diagonal), `Insertions`, `FailedElements` (elements whose primitive
+ * leaves the surface and is left out) and `ContinuousParameters` (the
+ * paper's N_c: the radii of all primitives plus three coordinates per
+ * skeletal vertex). Output 1: the primitives as
  * vtkGeneralizedPrimitiveFitter gives them (vertices, then edges, then
  * triangles in the order of output 0's points and cells).
+ *
+ * Output 2 (when Reconstruct is on): the union of the primitives as one
+ * closed, outward triangle surface: the zero level set of
+ * F(x) = min over primitives of their signed distances, sampled on a grid
+ * in a narrow band around it and contoured (as vtkSlabReconstructor's
+ * boundary mode does for a medial mesh). The grid spacing is the longest
+ * side of the union's bounding box divided by ReconstructionResolution;
+ * field data `GridSpacing`. Connect it to port 1 of
+ * vtkMedialReconstructionError to measure it against the surface.
  */
 #ifndef vtkMedialSkeletalDiagram_h
 #define vtkMedialSkeletalDiagram_h
@@ -51,6 +62,7 @@ public:
 
   vtkPolyData* GetSkeleton();
   vtkPartitionedDataSetCollection* GetPrimitives();
+  vtkPolyData* GetReconstruction();
 
   ///@{
   /// Largest distance of the surface from the primitives' union, as a
@@ -84,6 +96,18 @@ public:
   ///@}
 
   ///@{
+  /// Whether output 2 gets the union of the primitives as one closed
+  /// surface (default on), and the grid resolution it is contoured at:
+  /// cells along the longest side of the union's bounding box (default
+  /// 128; features thinner than about one cell are lost).
+  vtkSetMacro(Reconstruct, vtkTypeBool);
+  vtkGetMacro(Reconstruct, vtkTypeBool);
+  vtkBooleanMacro(Reconstruct, vtkTypeBool);
+  vtkSetClampMacro(ReconstructionResolution, int, 8, 1024);
+  vtkGetMacro(ReconstructionResolution, int);
+  ///@}
+
+  ///@{
   /// The last run: the error reached (fraction of the diagonal) and the
   /// number of elements.
   vtkGetMacro(ReachedError, double);
@@ -107,6 +131,8 @@ protected:
   int AngularResolution = 32;
   int VertexSubdivisions = 3;
   double Spacing = 0.02;
+  vtkTypeBool Reconstruct = true;
+  int ReconstructionResolution = 128;
   double ReachedError = 0.0;
   vtkIdType NumberOfElements = 0;
 

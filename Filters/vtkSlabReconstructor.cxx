@@ -5,15 +5,13 @@
 #include "Envelope/EnvelopeMesher.h"
 #include "Geometry/Vec3.h"
 #include "Support/Parallel.h"
+#include "vtkDistanceGridContour.h"
 #include "vtkMedialMeshConversion.h"
+#include "vtkSurfacePreparation.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkDoubleArray.h"
-#include "vtkFloatArray.h"
-#include "vtkFlyingEdges3D.h"
 #include "vtkIdTypeArray.h"
-#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -24,7 +22,6 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
-#include <cstring>
 
 vtkStandardNewMacro(vtkSlabReconstructor);
 
@@ -76,38 +73,6 @@ void AddPrimitiveArrays(
   output->GetCellData()->AddArray(id);
   output->GetCellData()->AddArray(vertices);
   output->GetCellData()->SetActiveScalars("PrimitiveKind");
-}
-
-// Points and triangles written straight into VTK arrays (millions of them).
-void MeshToPolyData(const TriangleMesh& mesh, vtkPolyData* output)
-{
-  vtkNew<vtkDoubleArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Points.size()));
-  if (!mesh.Points.empty())
-  {
-    std::memcpy(
-      coordinates->GetPointer(0), mesh.Points.data(), mesh.Points.size() * sizeof(Point3));
-  }
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  const vtkIdType nt = static_cast<vtkIdType>(mesh.Triangles.size());
-  offsets->SetNumberOfTuples(nt + 1);
-  connectivity->SetNumberOfTuples(3 * nt);
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    offsets->SetValue(t, 3 * t);
-    for (int k = 0; k < 3; ++k)
-    {
-      connectivity->SetValue(3 * t + k, mesh.Triangles[t][k]);
-    }
-  }
-  offsets->SetValue(nt, 3 * nt);
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
-  output->SetPoints(points);
-  output->SetPolys(polys);
 }
 }
 
@@ -178,7 +143,7 @@ int vtkSlabReconstructor::RequestData(
         {
           return 1;
         }
-        MeshToPolyData(surface.Mesh, output);
+        TriangleMeshToPolyData(surface.Mesh, output);
         AddPrimitiveArrays(output, envelope, surface.Primitive);
       }
       else
@@ -187,58 +152,12 @@ int vtkSlabReconstructor::RequestData(
         const double longest =
           std::max({ b.Hi[0] - b.Lo[0], b.Hi[1] - b.Lo[1], b.Hi[2] - b.Lo[2] });
         const double spacing = longest / this->BoundaryResolution;
-        const UnionDistanceGrid grid = SampleUnionDistance(envelope, spacing, progress(0.05, 0.7));
+        const DistanceGrid grid = SampleUnionDistance(envelope, spacing, progress(0.05, 0.7));
         if (grid.Aborted)
         {
           return 1;
         }
-        vtkNew<vtkImageData> image;
-        image->SetDimensions(grid.Dimensions.data());
-        image->SetOrigin(grid.Origin.data());
-        image->SetSpacing(spacing, spacing, spacing);
-        vtkNew<vtkFloatArray> values;
-        values->SetName("UnionDistance");
-        values->SetNumberOfTuples(static_cast<vtkIdType>(grid.Values.size()));
-        std::copy(grid.Values.begin(), grid.Values.end(), values->GetPointer(0));
-        image->GetPointData()->SetScalars(values);
-        vtkNew<vtkFlyingEdges3D> contour;
-        contour->SetInputData(image);
-        contour->SetValue(0, 0.0);
-        contour->ComputeNormalsOff();
-        contour->ComputeGradientsOff();
-        contour->ComputeScalarsOff();
-        contour->Update();
-        vtkPolyData* surface = contour->GetOutput();
-
-        // Triangles as a plain mesh: oriented outward (positive volume), then
-        // labelled by the primitive they lie on.
-        TriangleMesh mesh;
-        mesh.Points.resize(static_cast<std::size_t>(surface->GetNumberOfPoints()));
-        for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
-        {
-          surface->GetPoint(i, mesh.Points[i].data());
-        }
-        vtkCellArray* polys = surface->GetPolys();
-        mesh.Triangles.reserve(static_cast<std::size_t>(polys->GetNumberOfCells()));
-        vtkIdType npts = 0;
-        const vtkIdType* ids = nullptr;
-        double volume = 0.0;
-        for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
-        {
-          if (npts != 3)
-          {
-            continue;
-          }
-          mesh.Triangles.push_back({ ids[0], ids[1], ids[2] });
-          volume += Dot(mesh.Points[ids[0]], Cross(mesh.Points[ids[1]], mesh.Points[ids[2]]));
-        }
-        if (volume < 0.0)
-        {
-          for (Triangle& t : mesh.Triangles)
-          {
-            std::swap(t[1], t[2]);
-          }
-        }
+        const TriangleMesh mesh = ContourDistanceGrid(grid);
         std::vector<Point3> centroids(mesh.Triangles.size());
         for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
         {
@@ -247,7 +166,7 @@ int vtkSlabReconstructor::RequestData(
             (1.0 / 3.0) * (mesh.Points[tri[0]] + mesh.Points[tri[1]] + mesh.Points[tri[2]]);
         }
         this->UpdateProgress(0.85);
-        MeshToPolyData(mesh, output);
+        TriangleMeshToPolyData(mesh, output);
         AddPrimitiveArrays(output, envelope, SurfacePrimitives(envelope, centroids));
         long long thin = 0;
         for (double r : medial.Radii)

@@ -3,11 +3,14 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
 
+#include <cstring>
 #include <mutex>
 #include <tuple>
 
@@ -66,23 +69,35 @@ CrossingsMemo& Memo()
 }
 }
 
+// Points and triangles written straight into VTK arrays (millions of them
+// for a contoured reconstruction).
 void TriangleMeshToPolyData(const TriangleMesh& mesh, vtkPolyData* output)
 {
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Points.size()));
+  if (!mesh.Points.empty())
+  {
+    std::memcpy(
+      coordinates->GetPointer(0), mesh.Points.data(), mesh.Points.size() * sizeof(Point3));
+  }
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.Points.size()));
-  for (std::size_t i = 0; i < mesh.Points.size(); ++i)
+  points->SetData(coordinates);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  const vtkIdType nt = static_cast<vtkIdType>(mesh.Triangles.size());
+  offsets->SetNumberOfTuples(nt + 1);
+  connectivity->SetNumberOfTuples(3 * nt);
+  for (vtkIdType t = 0; t < nt; ++t)
   {
-    points->SetPoint(static_cast<vtkIdType>(i), mesh.Points[i].data());
+    offsets->SetValue(t, 3 * t);
+    for (int k = 0; k < 3; ++k)
+    {
+      connectivity->SetValue(3 * t + k, mesh.Triangles[t][k]);
+    }
   }
+  offsets->SetValue(nt, 3 * nt);
   vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(static_cast<vtkIdType>(mesh.Triangles.size()),
-    3 * static_cast<vtkIdType>(mesh.Triangles.size()));
-  for (const Triangle& t : mesh.Triangles)
-  {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    polys->InsertNextCell(3, ids);
-  }
+  polys->SetData(offsets, connectivity);
   output->Initialize();
   output->SetPoints(points);
   output->SetPolys(polys);

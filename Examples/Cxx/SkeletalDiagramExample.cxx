@@ -98,12 +98,16 @@ int main(int argc, char* argv[])
     writer->SetFileName((outputDir + "/primitive_" + std::to_string(e) + ".vtp").c_str());
     written = writer->Write() != 0 && written;
   }
+  // The union of the primitives as one closed surface.
+  writer->SetInputData(diagram->GetReconstruction());
+  writer->SetFileName((outputDir + "/reconstruction.vtp").c_str());
+  written = writer->Write() != 0 && written;
   if (!written)
   {
     std::cerr << "could not write into " << outputDir << "\n";
     return 1;
   }
-  std::cout << "wrote " << outputDir << "/skeleton.vtp and "
+  std::cout << "wrote " << outputDir << "/skeleton.vtp, reconstruction.vtp and "
             << primitives->GetNumberOfPartitionedDataSets() << " primitive_E.vtp\n";
   return EXIT_SUCCESS;
 }

@@ -6,6 +6,7 @@
 #include "Mesh/TriangleLocator.h"
 #include "Skeletal/PrimitiveFit.h"
 #include "Skeletal/PrimitiveTemplate.h"
+#include "Skeletal/PrimitiveUnion.h"
 #include "Skeletal/SkeletalDiagram.h"
 #include "Surface/AnalyticShapes.h"
 
@@ -13,15 +14,19 @@
 #include "vtkAnalyticShapeSource.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDistanceGridContour.h"
+#include "vtkFieldData.h"
 #include "vtkGeneralizedPrimitiveFitter.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
+#include "vtkMedialReconstructionError.h"
 #include "vtkMedialSkeletalDiagram.h"
 #include "vtkPartitionedDataSet.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPointData.h"
 #include "vtkStructuralMedialAxis.h"
+#include "vtkSurfacePreparation.h"
 
 #include <gtest/gtest.h>
 
@@ -70,6 +75,39 @@ bool ClosedAndConsistent(const PrimitiveTemplate& shape)
     }
   }
   return true;
+}
+
+// How deep the surface's vertices and triangle centroids lie inside the
+// closed mesh `primitive`: the largest depth (0 when none is inside).
+double DeepestSurfacePoint(const TriangleMesh& surface, const TriangleMesh& primitive)
+{
+  const TriangleLocator locator(primitive);
+  std::vector<Point3> points = surface.Points;
+  for (const Triangle& t : surface.Triangles)
+  {
+    points.push_back(
+      (1.0 / 3.0) * (surface.Points[t[0]] + surface.Points[t[1]] + surface.Points[t[2]]));
+  }
+  double deepest = 0.0;
+  for (const Point3& p : points)
+  {
+    if (locator.Inside(p))
+    {
+      deepest = std::max(deepest, locator.Distance(p));
+    }
+  }
+  return deepest;
+}
+
+// Enclosed volume of a closed, outward mesh.
+double Volume(const TriangleMesh& mesh)
+{
+  double volume = 0.0;
+  for (const Triangle& t : mesh.Triangles)
+  {
+    volume += Dot(mesh.Points[t[0]], Cross(mesh.Points[t[1]], mesh.Points[t[2]]));
+  }
+  return volume / 6.0;
 }
 }
 
@@ -367,6 +405,118 @@ TEST(SkeletalDiagram, FewElementsCoverSimpleShapes)
   EXPECT_LE(one.Error, SkeletalDiagramOptions().MaximumError * one.Diagonal);
 }
 
+// A vertex primitive in one arm of an L-shaped block: two neighbouring
+// directions of a coarse template pass either side of the reflex edge and
+// run far along the two arms, so the triangle between them cuts across the
+// edge and the primitive leaves the block there. Refinement splits the
+// template where surface points lie inside it and fits again, until none
+// lies deeper than the tolerance.
+TEST(SkeletalPrimitives, RefinementKeepsAPrimitiveInsideAReflexEdge)
+{
+  const TriangleMesh block = MakeLBlock({ 2, 2, 1 }, 8);
+  const TriangleLocator locator(block);
+  const Point3 centre{ -0.5, -0.5, 0.0 };
+  const PrimitiveTemplate coarse = MakeVertexTemplate(centre, 2);
+  const FittedPrimitive plain = FitPrimitive(block, locator, coarse);
+  ASSERT_TRUE(plain.Error.empty()) << plain.Error;
+  PrimitiveFitOptions options;
+  options.RefinementTolerance = 0.01;
+  PrimitiveTemplate refined = coarse;
+  const FittedPrimitive fit = FitPrimitiveRefined(block, locator, refined, options);
+  ASSERT_TRUE(fit.Error.empty()) << fit.Error;
+  const double before = DeepestSurfacePoint(block, PrimitiveSurface(coarse, plain));
+  const double after = DeepestSurfacePoint(block, PrimitiveSurface(refined, fit));
+  std::cout << "L-block: surface up to " << before << " inside the primitive, " << after
+            << " after refinement (" << coarse.Base.size() << " -> " << refined.Base.size()
+            << " directions)\n";
+  EXPECT_GT(before, 5.0 * options.RefinementTolerance);
+  EXPECT_LE(after, options.RefinementTolerance);
+  EXPECT_TRUE(ClosedAndConsistent(refined));
+  EXPECT_GT(refined.Base.size(), coarse.Base.size());
+  EXPECT_LE(refined.Base.size(), options.RefinementGrowth * coarse.Base.size());
+  for (std::size_t j = 0; j < fit.Radius.size(); ++j)
+  {
+    EXPECT_LE(fit.Radius[j], fit.MaximumRadius[j]);
+  }
+}
+
+// The union of two overlapping spheres as one closed surface: F's sign and
+// bounds, and the contoured surface's volume against the exact union's.
+TEST(SkeletalPrimitives, UnionOfPrimitivesIsOneClosedSurface)
+{
+  TriangleMesh left = MakeSphere(1.0, 32), right = left;
+  for (Point3& p : right.Points)
+  {
+    p[0] += 1.5;
+  }
+  const PrimitiveUnion both({ left, right, TriangleMesh() });
+  EXPECT_EQ(both.NumberOfPrimitives(), 2u);
+  EXPECT_NEAR(both.SignedDistance({ -2, 0, 0 }), 1.0, 0.01);
+  EXPECT_NEAR(both.SignedDistance({ 0, 0, 0 }), -1.0, 0.01);
+  // Inside both at depth 0.25 in each; the union's boundary is 0.66 away.
+  const double middle = both.SignedDistance({ 0.75, 0, 0 });
+  EXPECT_NEAR(middle, -0.25, 0.01);
+  EXPECT_GE(middle, -std::sqrt(1.0 - 0.75 * 0.75));
+
+  const DistanceGrid grid = SamplePrimitiveUnion(both, 0.02);
+  ASSERT_FALSE(grid.Aborted);
+  EXPECT_LT(grid.ExactPoints, grid.Values.size() / 2); // a narrow band
+  const TriangleMesh surface = ContourDistanceGrid(grid);
+  TriangleMesh closed;
+  closed.Points = surface.Points;
+  PrimitiveTemplate asTemplate;
+  asTemplate.Base = surface.Points;
+  asTemplate.Direction = surface.Points;
+  asTemplate.Triangles = surface.Triangles;
+  EXPECT_TRUE(ClosedAndConsistent(asTemplate));
+  // Two unit balls 1.5 apart overlap in a lens of pi (4 + 1.5)(2 - 1.5)^2 / 12.
+  const double exact = 8.0 / 3.0 * M_PI - M_PI * 5.5 * 0.25 / 12.0;
+  const double volume = Volume(surface);
+  std::cout << "union of two spheres: volume " << volume << " (exact " << exact << "), "
+            << surface.Triangles.size() << " triangles\n";
+  EXPECT_NEAR(volume, exact, 0.02 * exact);
+}
+
+// The error filter measures a closed surface on port 1 (a reconstruction
+// with no Radius) against the surface on port 0.
+TEST(SkeletalPrimitives, ErrorFilterMeasuresAReconstructedSurface)
+{
+  vtkNew<vtkPolyData> surface, inner;
+  TriangleMeshToPolyData(MakeSphere(1.05, 24), surface);
+  TriangleMeshToPolyData(MakeSphere(1.0, 24), inner);
+  vtkNew<vtkMedialReconstructionError> error;
+  error->SetInputData(0, surface);
+  error->SetInputData(1, inner);
+  error->SetNumberOfSamples(20000);
+  error->SetNumberOfEnvelopeSamples(20000);
+  vtkNew<test::ErrorCatcher> errors;
+  error->AddObserver(vtkCommand::ErrorEvent, errors);
+  error->Update();
+  ASSERT_EQ(errors->Count, 0) << errors->Last;
+  std::cout << "sphere 1.05 against 1.0: Hausdorff " << error->GetHausdorff() << "\n";
+  EXPECT_NEAR(error->GetHausdorff(), 0.05, 0.005);
+  const double mean = error->GetOutput()->GetFieldData()->GetArray("Mean")->GetTuple1(0);
+  EXPECT_NEAR(mean, 0.05, 0.005);
+  vtkDataArray* signedDistance = error->GetOutput()->GetPointData()->GetArray("SignedDistance");
+  ASSERT_NE(signedDistance, nullptr);
+  EXPECT_GT(signedDistance->GetRange()[0], 0.0); // the surface lies outside the smaller sphere
+  EXPECT_EQ(error->GetOutput(1)->GetPointData()->GetArray("PrimitiveKind"), nullptr);
+
+  // The other way round (and with inward triangles, which are turned): inside.
+  vtkNew<vtkPolyData> outer;
+  TriangleMesh flipped = MakeSphere(1.1, 24);
+  for (Triangle& t : flipped.Triangles)
+  {
+    std::swap(t[1], t[2]);
+  }
+  TriangleMeshToPolyData(flipped, outer);
+  error->SetInputData(1, outer);
+  error->Update();
+  EXPECT_NEAR(error->GetHausdorff(), 0.05, 0.005);
+  signedDistance = error->GetOutput()->GetPointData()->GetArray("SignedDistance");
+  EXPECT_LT(signedDistance->GetRange()[1], 0.0);
+}
+
 // The diagram filter in a pipeline: a dumbbell, its Structural MAT, the
 // diagram's skeleton and primitives; too small an element budget warns that
 // the error bound was not reached; no medial mesh is an error.
@@ -401,6 +551,27 @@ TEST(SkeletalDiagram, VtkFilterGivesSkeletonAndPrimitives)
   ASSERT_NE(skeleton->GetPointData()->GetArray("MedialVertexId"), nullptr);
   ASSERT_NE(skeleton->GetFieldData()->GetArray("Error"), nullptr);
   EXPECT_EQ(skeleton->GetFieldData()->GetArray("FailedElements")->GetTuple1(0), 0.0);
+
+  // The union as one closed surface, measured like any reconstruction.
+  vtkPolyData* reconstruction = diagram->GetReconstruction();
+  ASSERT_GT(reconstruction->GetNumberOfPolys(), 0);
+  EXPECT_GT(skeleton->GetFieldData()->GetArray("ContinuousParameters")->GetTuple1(0),
+    3.0 * skeleton->GetNumberOfPoints());
+  vtkNew<vtkMedialReconstructionError> error;
+  error->SetInputConnection(0, dumbbell->GetOutputPort());
+  error->SetInputConnection(1, diagram->GetOutputPort(2));
+  error->SetNumberOfSamples(20000);
+  error->SetNumberOfEnvelopeSamples(20000);
+  error->Update();
+  const double mean = error->GetOutput()->GetFieldData()->GetArray("MeanPercent")->GetTuple1(0);
+  std::cout << "dumbbell reconstruction: two-sided Hausdorff " << error->GetHausdorffPercent()
+            << "%, mean " << mean << "%\n";
+  EXPECT_LE(error->GetHausdorffPercent(), 2.0 * 100.0 * diagram->GetMaximumError());
+  EXPECT_LE(mean, 0.25 * 100.0 * diagram->GetMaximumError());
+  diagram->ReconstructOff();
+  diagram->Update();
+  EXPECT_EQ(diagram->GetReconstruction()->GetNumberOfPoints(), 0);
+  diagram->ReconstructOn();
 
   diagram->SetMaximumElements(1);
   diagram->Update();

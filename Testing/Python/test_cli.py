@@ -253,7 +253,7 @@ class CommandLineTest(unittest.TestCase):
         out = self.path("out")
         report = self.path("report.json")
         result = run("--samples", "5000", "--target", "100", "--skeletal-diagram", "20",
-                     "--report", report, self.path("dumbbell.vtp"), out)
+                     "--error", "--report", report, self.path("dumbbell.vtp"), out)
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("skeletal diagram:", result.stdout)
         with open(report) as f:
@@ -275,6 +275,17 @@ class CommandLineTest(unittest.TestCase):
         skeleton.SetFileName(os.path.join(out, "skeleton.vtp"))
         skeleton.Update()
         self.assertEqual(skeleton.GetOutput().GetNumberOfPoints(), diagram["vertices"])
+        # The primitives' union as one closed surface, measured against the
+        # dumbbell like the MAT's envelope.
+        union = vtk.vtkXMLPolyDataReader()
+        union.SetFileName(os.path.join(out, "reconstruction.vtp"))
+        union.Update()
+        self.assertGreater(union.GetOutput().GetNumberOfPolys(), 0)
+        self.assertLessEqual(diagram["hausdorff"]["two_sided_percent"], 1.0)
+        self.assertLess(diagram["hausdorff"]["mean_two_sided_percent"],
+                        diagram["hausdorff"]["two_sided_percent"])
+        self.assertGreater(diagram["continuous_parameters"], 3 * diagram["vertices"])
+        self.assertGreater(data["hausdorff"]["mean_two_sided"], 0.0)
         # A count that is no whole number is refused.
         refused = run("--skeletal-diagram", "0", self.path("dumbbell.vtp"), out)
         self.assertNotEqual(refused.returncode, 0)

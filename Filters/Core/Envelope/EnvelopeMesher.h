@@ -6,6 +6,7 @@
 #define medialaxis_EnvelopeMesher_h
 
 #include "Envelope/EnvelopeDistance.h"
+#include "Geometry/DistanceGrid.h"
 #include "Mesh/PolygonMesh.h"
 
 #include <functional>
@@ -42,24 +43,10 @@ struct EnvelopeSurface
 EnvelopeSurface MeshEnvelopePrimitives(
   const MedialEnvelope& envelope, const EnvelopeMeshOptions& options);
 
-/// F (the union's signed distance) on a regular grid, x fastest. The zero
-/// level set is exactly the boundary of the union; the grid extends two
-/// spacings beyond the union so that it is closed.
-struct UnionDistanceGrid
-{
-  Point3 Origin{ 0, 0, 0 };
-  double Spacing = 0.0;
-  std::array<int, 3> Dimensions{ 0, 0, 0 };
-  /// Exact F within one block (8^3 points) of the boundary; elsewhere a value
-  /// of the right sign whose magnitude exceeds one spacing (F is 1-Lipschitz,
-  /// so no grid edge there crosses the boundary).
-  std::vector<float> Values;
-  std::size_t ExactPoints = 0;
-  bool Aborted = false;
-};
-
-/// Samples F on a grid of the given spacing (narrow band, see above).
-UnionDistanceGrid SampleUnionDistance(const MedialEnvelope& envelope, double spacing,
+/// F (the union's signed distance, 1-Lipschitz) on a regular grid, exact
+/// near the boundary of the union (DistanceGrid.h), whose zero level set
+/// is exactly that boundary.
+DistanceGrid SampleUnionDistance(const MedialEnvelope& envelope, double spacing,
   const std::function<bool(double)>& progress = nullptr);
 
 /// The primitive whose surface the boundary point x lies on: the primitive

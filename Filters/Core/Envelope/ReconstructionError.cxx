@@ -390,4 +390,77 @@ ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface
   result.RMS = std::max(result.SurfaceToEnvelope.RMS, result.EnvelopeToSurface.RMS);
   return result;
 }
+
+ReconstructionErrorResult ComputeSurfaceDistanceError(const TriangleMesh& surface,
+  const TriangleMesh& reconstruction, const ReconstructionErrorOptions& options)
+{
+  ReconstructionErrorResult result;
+  if (surface.Points.empty() || surface.Triangles.empty() || reconstruction.Triangles.empty())
+  {
+    return result;
+  }
+  const auto box = BoundingBox(surface.Points);
+  result.Diagonal = Norm(box.second - box.first);
+  auto clock = std::chrono::steady_clock::now();
+  const TriangleLocator toReconstruction(reconstruction);
+  std::vector<Point3> samples, normals;
+  SampleTriangleMesh(surface, options.NumberOfSamples, options.RandomSeed, samples, normals);
+  const std::size_t nv = surface.Points.size(), ns = samples.size();
+  std::vector<double> distance(nv + ns);
+  result.VertexSignedDistance.resize(nv);
+  if (!ForEachChunked(nv + ns, 0.0, 0.6, options.Progress,
+        [&](std::size_t i, int)
+        {
+          const Point3& p = i < nv ? surface.Points[i] : samples[i - nv];
+          distance[i] = toReconstruction.Distance(p);
+          if (i < nv)
+          {
+            result.VertexSignedDistance[i] =
+              toReconstruction.Inside(p) ? -distance[i] : distance[i];
+          }
+        }))
+  {
+    result.Aborted = true;
+    return result;
+  }
+  for (double signedDistance : result.VertexSignedDistance)
+  {
+    result.InsidePoints += signedDistance < 0.0 ? 1 : 0;
+  }
+  result.VertexDistance.assign(
+    distance.begin(), distance.begin() + static_cast<std::ptrdiff_t>(nv));
+  result.VertexLowerBound = result.VertexDistance;
+  Summarise(distance, ns > 0 ? nv : 0, result.SurfaceToEnvelope);
+  result.SurfaceToEnvelope.HausdorffLowerBound = result.SurfaceToEnvelope.Hausdorff;
+  result.SurfaceSeconds = Lap(clock);
+
+  const TriangleLocator toSurface(surface);
+  SampleTriangleMesh(reconstruction, options.NumberOfEnvelopeSamples,
+    options.RandomSeed ^ 0x5DEECE66Dull, result.EnvelopeSamples, normals);
+  result.EnvelopeCandidates = result.EnvelopeSamples.size();
+  result.EnvelopeSampleDistance.resize(result.EnvelopeSamples.size());
+  if (!ForEachChunked(result.EnvelopeSamples.size(), 0.6, 0.4, options.Progress,
+        [&](std::size_t i, int)
+        { result.EnvelopeSampleDistance[i] = toSurface.Distance(result.EnvelopeSamples[i]); }))
+  {
+    result.Aborted = true;
+    return result;
+  }
+  Summarise(result.EnvelopeSampleDistance, 0, result.EnvelopeToSurface);
+  result.EnvelopeToSurface.HausdorffLowerBound = result.EnvelopeToSurface.Hausdorff;
+  for (std::size_t i = 0; i < result.EnvelopeSamples.size(); ++i)
+  {
+    if (result.EnvelopeSampleDistance[i] == result.EnvelopeToSurface.Hausdorff)
+    {
+      result.EnvelopeFarthestPoint = result.EnvelopeSamples[i];
+      break;
+    }
+  }
+  result.EnvelopeSeconds = Lap(clock);
+  result.Hausdorff =
+    std::max(result.SurfaceToEnvelope.Hausdorff, result.EnvelopeToSurface.Hausdorff);
+  result.Mean = std::max(result.SurfaceToEnvelope.Mean, result.EnvelopeToSurface.Mean);
+  result.RMS = std::max(result.SurfaceToEnvelope.RMS, result.EnvelopeToSurface.RMS);
+  return result;
+}
 }

@@ -88,6 +88,17 @@ struct ReconstructionErrorResult
 ReconstructionErrorResult ComputeReconstructionError(const TriangleMesh& surface,
   const MedialEnvelope& envelope, const ReconstructionErrorOptions& options = {});
 
+/// The same measures between the surface and a closed triangle surface that
+/// reconstructs it (outward; a contoured union of primitives, a remeshed
+/// envelope): at the surface's vertices and samples the distance to the
+/// reconstruction (signed by an inside test of the reconstruction; exact,
+/// so the lower bounds equal the distances), and at NumberOfEnvelopeSamples
+/// area-uniform samples of the reconstruction the distance to the surface.
+/// No local search raises the maximum (MaximumSearches is not used), and
+/// EnvelopeSamplePrimitive is left empty.
+ReconstructionErrorResult ComputeSurfaceDistanceError(const TriangleMesh& surface,
+  const TriangleMesh& reconstruction, const ReconstructionErrorOptions& options = {});
+
 /// Area-uniform random points on a triangle mesh with their triangle's unit
 /// normal; point k depends only on (seed, k).
 void SampleTriangleMesh(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,

@@ -89,4 +89,20 @@ TriangleAdjacency ComputeTriangleAdjacency(
   }
   return adjacency;
 }
+
+void OrientOutward(TriangleMesh& mesh)
+{
+  double volume = 0.0;
+  for (const Triangle& t : mesh.Triangles)
+  {
+    volume += Dot(mesh.Points[t[0]], Cross(mesh.Points[t[1]], mesh.Points[t[2]]));
+  }
+  if (volume < 0.0)
+  {
+    for (Triangle& t : mesh.Triangles)
+    {
+      std::swap(t[1], t[2]);
+    }
+  }
+}
 }

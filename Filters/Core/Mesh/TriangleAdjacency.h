@@ -55,6 +55,10 @@ TriangleAdjacency ComputeTriangleAdjacency(const TriangleMesh& mesh, double feat
 
 /// Unit normal of triangle t (zero for a degenerate triangle).
 Point3 TriangleNormal(const TriangleMesh& mesh, Index t);
+
+/// Flips every triangle when the volume the mesh encloses is negative, so
+/// that a closed mesh faces outward.
+void OrientOutward(TriangleMesh& mesh);
 }
 
 #endif

@@ -95,6 +95,24 @@ public:
       std::nextafter(radius2, std::numeric_limits<double>::infinity()));
   }
 
+  /// Whether p lies inside the mesh, which must be closed, outward and free
+  /// of self-intersections: the first triangle a fixed ray from p meets
+  /// faces away from p. The ray's direction lines up with no axis or
+  /// common template direction, so that it rarely grazes an edge.
+  bool Inside(const Point3& p) const
+  {
+    static const Point3 direction = Normalized(Point3{ 0.5773, 0.6042, 0.5497 });
+    const RayHit hit = this->FirstHit(p, direction, 0.0, std::numeric_limits<double>::infinity());
+    if (hit.Triangle < 0)
+    {
+      return false;
+    }
+    const Triangle& t = this->Mesh.Triangles[hit.Triangle];
+    const Point3 normal = Cross(this->Mesh.Points[t[1]] - this->Mesh.Points[t[0]],
+      this->Mesh.Points[t[2]] - this->Mesh.Points[t[0]]);
+    return Dot(normal, direction) > 0.0;
+  }
+
   struct RayHit
   {
     double Distance = std::numeric_limits<double>::infinity(); // along the unit direction

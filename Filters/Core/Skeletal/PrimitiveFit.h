@@ -38,6 +38,13 @@ struct PrimitiveFitOptions
   double StepFraction = 0.1;
   /// Active-set rounds per progression.
   int Iterations = 15;
+  /// FitPrimitiveRefined: a template triangle is split where the surface
+  /// cuts in between its directions by more than RefinementTolerance
+  /// (absolute; 0 never splits), in at most MaximumRefinements rounds, and
+  /// no more once the template has RefinementGrowth times its points.
+  double RefinementTolerance = 0.0;
+  int MaximumRefinements = 8;
+  std::size_t RefinementGrowth = 8;
 };
 
 struct FittedPrimitive
@@ -57,6 +64,30 @@ struct FittedPrimitive
 /// is open). Deterministic.
 FittedPrimitive FitPrimitive(const TriangleMesh& surface, const TriangleLocator& locator,
   const PrimitiveTemplate& shape, const PrimitiveFitOptions& options = PrimitiveFitOptions());
+
+/// FitPrimitive, then refines `shape` where the fitted primitive leaves the
+/// surface between its directions (a narrow gap between two fingers that
+/// no template ray meets, a notch) and fits again, until it does not or
+/// MaximumRefinements rounds were made. Split, at the middles of their
+/// edges (the neighbouring triangles split to match): the template
+/// triangle nearest to each surface vertex or triangle centroid lying
+/// inside the primitive deeper than RefinementTolerance; and an edge or
+/// triangle at whose middle (base points averaged, directions averaged
+/// and normalised) the interpolated radius passes the ray's exit from the
+/// surface by more than that (the surface cuts in between surface points).
+/// Deterministic.
+FittedPrimitive FitPrimitiveRefined(const TriangleMesh& surface, const TriangleLocator& locator,
+  PrimitiveTemplate& shape, const PrimitiveFitOptions& options = PrimitiveFitOptions());
+
+/// The refinement of FitPrimitiveRefined on a fit already made of `shape`
+/// (left as it is when that fit failed). A round whose system fails to
+/// converge ends it with the last fit.
+void RefinePrimitive(const TriangleMesh& surface, const TriangleLocator& locator,
+  PrimitiveTemplate& shape, FittedPrimitive& fit, const PrimitiveFitOptions& options);
+
+/// The fitted primitive as a closed triangle mesh (the template's triangles
+/// over PrimitivePoints); empty when the fit failed.
+TriangleMesh PrimitiveSurface(const PrimitiveTemplate& shape, const FittedPrimitive& fit);
 }
 
 #endif

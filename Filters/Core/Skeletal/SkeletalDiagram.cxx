@@ -2,6 +2,7 @@
 #include "Skeletal/SkeletalDiagram.h"
 
 #include "Mesh/TriangleLocator.h"
+#include "Skeletal/PrimitiveUnion.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -82,6 +83,75 @@ struct Fitted
   PrimitiveTemplate Template;
   FittedPrimitive Fit;
 };
+
+// The distance from each check point to the union of the diagram's
+// primitives; sets Error, MeanError and FailedElements and returns the
+// farthest point. `exact`: to the boundary of the union, so that a point
+// inside a primitive (where the primitive passes the surface) counts by
+// its depth (|F| of PrimitiveUnion); otherwise to the nearest primitive
+// surface, which is the same outside the primitives, where coverage is
+// lacking, and far cheaper (what the insertions go by).
+std::size_t MeasureCoverage(SkeletalDiagram& diagram, const std::vector<Point3>& checks, bool exact)
+{
+  std::vector<TriangleMesh> pieces;
+  diagram.FailedElements = 0;
+  for (std::size_t e = 0; e < diagram.Primitives.size(); ++e)
+  {
+    pieces.push_back(PrimitiveSurface(diagram.Templates[e], diagram.Primitives[e]));
+    diagram.FailedElements += pieces.back().Triangles.empty() ? 1 : 0;
+  }
+  std::vector<double> gap(checks.size(), Infinity);
+  if (exact)
+  {
+    const PrimitiveUnion united(pieces);
+    if (!united.Empty())
+    {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, checks.size(), 256),
+        [&](const tbb::blocked_range<std::size_t>& range)
+        {
+          for (std::size_t k = range.begin(); k != range.end(); ++k)
+          {
+            gap[k] = std::abs(united.SignedDistance(checks[k]));
+          }
+        });
+    }
+  }
+  else
+  {
+    TriangleMesh all;
+    for (const TriangleMesh& piece : pieces)
+    {
+      const Index offset = static_cast<Index>(all.Points.size());
+      all.Points.insert(all.Points.end(), piece.Points.begin(), piece.Points.end());
+      for (const Triangle& t : piece.Triangles)
+      {
+        all.Triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+      }
+    }
+    if (!all.Triangles.empty())
+    {
+      const TriangleLocator nearest(all);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, checks.size(), 256),
+        [&](const tbb::blocked_range<std::size_t>& range)
+        {
+          for (std::size_t k = range.begin(); k != range.end(); ++k)
+          {
+            gap[k] = nearest.Distance(checks[k]);
+          }
+        });
+    }
+  }
+  const std::size_t worst =
+    static_cast<std::size_t>(std::max_element(gap.begin(), gap.end()) - gap.begin());
+  diagram.Error = gap[worst];
+  double sum = 0.0;
+  for (double g : gap)
+  {
+    sum += std::isfinite(g) ? g : diagram.Diagonal;
+  }
+  diagram.MeanError = sum / static_cast<double>(gap.size());
+  return worst;
+}
 }
 
 SkeletalDiagram BuildSkeletalDiagram(
@@ -216,51 +286,13 @@ SkeletalDiagram BuildSkeletalDiagram(
     {
       cache.emplace(missing[k], std::move(fresh[k]));
     }
-    TriangleMesh united;
     for (const ElementKey& key : keys)
     {
       const Fitted& fitted = cache.at(key);
       current.Templates.push_back(fitted.Template);
       current.Primitives.push_back(fitted.Fit);
-      if (fitted.Fit.Radius.empty())
-      {
-        ++current.FailedElements;
-        continue;
-      }
-      const Index offset = static_cast<Index>(united.Points.size());
-      for (const Point3& p : PrimitivePoints(fitted.Template, fitted.Fit.Radius))
-      {
-        united.Points.push_back(p);
-      }
-      for (const Triangle& t : fitted.Template.Triangles)
-      {
-        united.Triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
-      }
     }
-
-    // Coverage: how far each surface point lies from the union.
-    std::vector<double> gap(checks.size(), Infinity);
-    if (!united.Triangles.empty())
-    {
-      const TriangleLocator unionLocator(united);
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, checks.size(), 256),
-        [&](const tbb::blocked_range<std::size_t>& range)
-        {
-          for (std::size_t k = range.begin(); k != range.end(); ++k)
-          {
-            gap[k] = unionLocator.Distance(checks[k]);
-          }
-        });
-    }
-    const std::size_t worst =
-      static_cast<std::size_t>(std::max_element(gap.begin(), gap.end()) - gap.begin());
-    current.Error = gap[worst];
-    double sum = 0.0;
-    for (double g : gap)
-    {
-      sum += std::isfinite(g) ? g : diagonal;
-    }
-    current.MeanError = sum / static_cast<double>(gap.size());
+    const std::size_t worst = MeasureCoverage(current, checks, false);
 
     const bool tooMany = static_cast<int>(current.NumberOfElements()) > options.MaximumElements;
     if (tooMany && !best.Points.empty())
@@ -299,6 +331,28 @@ SkeletalDiagram BuildSkeletalDiagram(
       break;
     }
     sites.push_back(chosen);
+  }
+
+  // The primitives of the diagram kept, refined where they pass the
+  // surface between their directions (not during the insertions: most of
+  // those primitives are dropped again, and the refinement costs several
+  // fits), then measured again.
+  PrimitiveFitOptions refinement = options.Fit;
+  if (refinement.RefinementTolerance <= 0.0)
+  {
+    refinement.RefinementTolerance = 0.5 * bound;
+  }
+  if (!best.Aborted)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, best.Primitives.size(), 1),
+      [&](const tbb::blocked_range<std::size_t>& range)
+      {
+        for (std::size_t e = range.begin(); e != range.end(); ++e)
+        {
+          RefinePrimitive(surface, locator, best.Templates[e], best.Primitives[e], refinement);
+        }
+      });
+    MeasureCoverage(best, checks, true);
   }
   return best;
 }

@@ -59,6 +59,18 @@ struct SkeletalDiagram
   int FailedElements = 0;
   bool Aborted = false;
 
+  /// The paper's N_c: every primitive's radii plus three coordinates per
+  /// skeletal vertex.
+  std::size_t ContinuousParameters() const
+  {
+    std::size_t count = 3 * this->Points.size();
+    for (const FittedPrimitive& p : this->Primitives)
+    {
+      count += p.Radius.size();
+    }
+    return count;
+  }
+
   std::size_t NumberOfElements() const
   {
     return this->Points.size() + this->Edges.size() + this->Triangles.size();

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The union of closed primitive meshes (fitted generalized primitives) as a
+// signed distance, for contouring it as one closed surface (the
+// reconstruction of a skeletal diagram) on a narrow-band grid.
+//
+// F(x) = distance to the nearest primitive surface where x lies outside
+// every primitive (exactly the distance to the union there), and
+// -(largest distance to the surface of a primitive containing x) inside
+// (at most the depth in the union, since each primitive lies inside it).
+// F is continuous, has the union's boundary as its zero level set and
+// never exceeds the distance to it: what SampleNarrowBand needs.
+#ifndef medialaxis_PrimitiveUnion_h
+#define medialaxis_PrimitiveUnion_h
+
+#include "Geometry/BoxTree.h"
+#include "Geometry/DistanceGrid.h"
+#include "Mesh/PolygonMesh.h"
+#include "Mesh/TriangleLocator.h"
+
+#include <deque>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace medialaxis
+{
+class PrimitiveUnion
+{
+public:
+  /// `primitives`: closed, outward, self-intersection-free meshes (empty
+  /// ones are skipped). Copies them.
+  explicit PrimitiveUnion(const std::vector<TriangleMesh>& primitives);
+
+  bool Empty() const { return this->Meshes.empty(); }
+  const Box& Bounds() const { return this->AllBounds; }
+  std::size_t NumberOfPrimitives() const { return this->Meshes.size(); }
+
+  /// F(x) above. Thread-safe.
+  double SignedDistance(const Point3& x) const;
+
+  /// Whether x lies inside primitive i (TriangleLocator::Inside).
+  bool Inside(std::size_t i, const Point3& x) const;
+
+private:
+  std::deque<TriangleMesh> Meshes; // stable addresses for the locators
+  std::vector<std::unique_ptr<TriangleLocator>> Locators;
+  std::vector<Box> Boxes;
+  TriangleMesh All;
+  std::unique_ptr<TriangleLocator> AllLocator;
+  Box AllBounds;
+};
+
+/// F of the union sampled for contouring: the grid spans the union's bounds
+/// with the given spacing (DistanceGrid.h).
+DistanceGrid SamplePrimitiveUnion(const PrimitiveUnion& primitives, double spacing,
+  const std::function<bool(double)>& progress = nullptr);
+}
+
+#endif

@@ -440,6 +440,37 @@ TEST(SkeletalPrimitives, RefinementKeepsAPrimitiveInsideAReflexEdge)
   }
 }
 
+// The inside test on a mesh with a fold: a sliver of inverted triangles
+// (a flat tetrahedron, 0.001 thick, turned inside out, as refinement can
+// leave where radii change fast) lies on the first ray from a point outside
+// a sphere. The ray meets the sliver's face that turns away first, which
+// alone says "inside"; its other face, facing the other way right behind
+// it, marks a fold, and the next direction decides.
+TEST(SkeletalPrimitives, InsideTestLooksPastAFold)
+{
+  TriangleMesh mesh = MakeSphere(1.0, 16);
+  const Point3 outside{ -2.0, -2.0, -2.0 };
+  const Point3 ray = Normalized(Point3{ 0.5773, 0.6042, 0.5497 });
+  Point3 e1 = Normalized(Cross(ray, Point3{ 1, 0, 0 })), e2 = Cross(ray, e1);
+  const Point3 front = outside + 0.5 * ray, back = front + 0.001 * ray;
+  const Index first = static_cast<Index>(mesh.Points.size());
+  for (const Point3& p :
+    { front + 0.1 * e1, front - 0.05 * e1 + 0.09 * e2, front - 0.05 * e1 - 0.09 * e2, back })
+  {
+    mesh.Points.push_back(p);
+  }
+  // Inward faces: the face towards the point (front) faces along the ray.
+  const std::vector<Triangle> sliver = { { first, first + 1, first + 2 },
+    { first, first + 3, first + 1 }, { first + 1, first + 3, first + 2 },
+    { first + 2, first + 3, first } };
+  mesh.Triangles.insert(mesh.Triangles.end(), sliver.begin(), sliver.end());
+  const TriangleLocator locator(mesh);
+  const auto hit = locator.FirstHit(outside, ray, 0.0, 10.0);
+  ASSERT_GE(hit.Triangle, static_cast<Index>(mesh.Triangles.size() - sliver.size()));
+  EXPECT_FALSE(locator.Inside(outside));
+  EXPECT_TRUE(locator.Inside({ 0.1, 0.2, 0.3 }));
+}
+
 // The union of two overlapping spheres as one closed surface: F's sign and
 // bounds, and the contoured surface's volume against the exact union's.
 TEST(SkeletalPrimitives, UnionOfPrimitivesIsOneClosedSurface)

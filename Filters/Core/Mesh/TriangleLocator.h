@@ -96,21 +96,46 @@ public:
   }
 
   /// Whether p lies inside the mesh, which must be closed, outward and free
-  /// of self-intersections: the first triangle a fixed ray from p meets
-  /// faces away from p. The ray's direction lines up with no axis or
-  /// common template direction, so that it rarely grazes an edge.
+  /// of self-intersections: the first triangle a ray from p meets faces
+  /// away from p. A ray that decides nothing is not used: one that grazes
+  /// the triangle it meets, or meets another triangle facing the other way
+  /// within 1% further (through an edge where the surface folds back, as a
+  /// thin fin or a slightly self-intersecting fold does); the next of three
+  /// fixed directions is tried, and if all are undecided they vote. The
+  /// directions line up with no axis or common template direction.
   bool Inside(const Point3& p) const
   {
-    static const Point3 direction = Normalized(Point3{ 0.5773, 0.6042, 0.5497 });
-    const RayHit hit = this->FirstHit(p, direction, 0.0, std::numeric_limits<double>::infinity());
-    if (hit.Triangle < 0)
+    static const Point3 directions[3] = { Normalized(Point3{ 0.5773, 0.6042, 0.5497 }),
+      Normalized(Point3{ -0.6627, 0.2139, 0.7177 }),
+      Normalized(Point3{ 0.1453, -0.8919, 0.4283 }) };
+    auto cosine = [this](Index triangle, const Point3& direction)
     {
-      return false;
+      const Triangle& t = this->Mesh.Triangles[triangle];
+      const Point3 normal = Cross(this->Mesh.Points[t[1]] - this->Mesh.Points[t[0]],
+        this->Mesh.Points[t[2]] - this->Mesh.Points[t[0]]);
+      return Dot(normal, direction) / std::max(Norm(normal), 1e-300);
+    };
+    int votes = 0;
+    for (const Point3& direction : directions)
+    {
+      const RayHit hit = this->FirstHit(p, direction, 0.0, std::numeric_limits<double>::infinity());
+      if (hit.Triangle < 0)
+      {
+        return false; // a ray that leaves without a hit: outside a closed mesh
+      }
+      const double first = cosine(hit.Triangle, direction);
+      const double slack = 0.01 * hit.Distance;
+      const RayHit next = this->FirstHitIf(
+        p, direction, 0.0, hit.Distance + slack, [&](Index t) { return t != hit.Triangle; });
+      const bool fold =
+        next.Triangle >= 0 && (cosine(next.Triangle, direction) > 0.0) != (first > 0.0);
+      if (std::abs(first) > 0.01 && !fold)
+      {
+        return first > 0.0;
+      }
+      votes += first > 0.0 ? 1 : -1;
     }
-    const Triangle& t = this->Mesh.Triangles[hit.Triangle];
-    const Point3 normal = Cross(this->Mesh.Points[t[1]] - this->Mesh.Points[t[0]],
-      this->Mesh.Points[t[2]] - this->Mesh.Points[t[0]]);
-    return Dot(normal, direction) > 0.0;
+    return votes > 0;
   }
 
   struct RayHit

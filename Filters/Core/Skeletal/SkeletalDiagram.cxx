@@ -340,7 +340,7 @@ SkeletalDiagram BuildSkeletalDiagram(
   PrimitiveFitOptions refinement = options.Fit;
   if (refinement.RefinementTolerance <= 0.0)
   {
-    refinement.RefinementTolerance = 0.5 * bound;
+    refinement.RefinementTolerance = 0.2 * bound;
   }
   if (!best.Aborted)
   {

@@ -345,7 +345,7 @@ void RefinePrimitive(const TriangleMesh& surface, const TriangleLocator& locator
       break;
     }
     // The new points start between their edge's radii, the others where
-    // they were: a few growth steps settle them.
+    // they were.
     std::vector<double> maximum = fit.MaximumRadius, initial = fit.Radius;
     PrimitiveTemplate finer = shape;
     SplitEdges(finer, split);
@@ -361,9 +361,11 @@ void RefinePrimitive(const TriangleMesh& surface, const TriangleLocator& locator
         std::min(0.5 * (fit.Radius[edge->first] + fit.Radius[edge->second]), maximum.back()));
     }
     const int progressions = fit.Progressions;
-    // From radii that were settled: a few growth steps are enough.
+    // From radii that were settled, the growth can aim at the surface at
+    // once (the fixed point the steps of growth lead to): a few rounds.
     PrimitiveFitOptions settle = options;
-    settle.Progressions = std::min(options.Progressions, 20);
+    settle.StepFraction = 1.0;
+    settle.Progressions = std::min(options.Progressions, 3);
     FittedPrimitive refined = SolveRadii(finer, std::move(maximum), initial, settle);
     if (refined.Radius.empty())
     {

@@ -22,6 +22,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <string>
 
 vtkStandardNewMacro(vtkMedialReconstructionError);
@@ -136,6 +137,21 @@ int vtkMedialReconstructionError::RequestData(
   if (reconstructed)
   {
     reconstruction = OutwardTriangles(medialInput);
+    // Distances to an open surface are still distances, but its inside is
+    // undefined: say so rather than report signs that mean nothing.
+    const TriangleAdjacency adjacency = ComputeTriangleAdjacency(reconstruction, 0.0);
+    std::size_t openEdges = 0;
+    for (const auto& across : adjacency.Neighbour)
+    {
+      openEdges += static_cast<std::size_t>(std::count(across.begin(), across.end(), Index(-1)));
+    }
+    if (openEdges > 0)
+    {
+      vtkWarningMacro(<< "the surface on input port 1 is not closed (" << openEdges
+                      << " triangle sides with no single neighbour): its distances are measured, "
+                         "but SignedDistance and InsidePoints mean nothing for it; close it, or "
+                         "connect a medial mesh with point data 'Radius'");
+    }
   }
   else
   {

@@ -546,6 +546,24 @@ TEST(SkeletalPrimitives, ErrorFilterMeasuresAReconstructedSurface)
   EXPECT_NEAR(error->GetHausdorff(), 0.05, 0.005);
   signedDistance = error->GetOutput()->GetPointData()->GetArray("SignedDistance");
   EXPECT_LT(signedDistance->GetRange()[1], 0.0);
+
+  // Closed surfaces pass without a warning; an open one is measured, with a
+  // warning that its signs mean nothing.
+  vtkNew<test::ErrorCatcher> warnings;
+  error->AddObserver(vtkCommand::WarningEvent, warnings);
+  error->Update();
+  EXPECT_EQ(warnings->Count, 0) << warnings->Last;
+  TriangleMesh open = MakeSphere(1.0, 24);
+  open.Triangles.pop_back();
+  vtkNew<vtkPolyData> openSurface;
+  TriangleMeshToPolyData(open, openSurface);
+  error->SetInputData(1, openSurface);
+  error->Update();
+  EXPECT_EQ(errors->Count, 0) << errors->Last;
+  EXPECT_EQ(warnings->Count, 1);
+  EXPECT_NE(warnings->Last.find("not closed (3 triangle sides"), std::string::npos)
+    << warnings->Last;
+  EXPECT_NEAR(error->GetHausdorff(), 0.05, 0.005);
 }
 
 // The diagram filter in a pipeline: a dumbbell, its Structural MAT, the

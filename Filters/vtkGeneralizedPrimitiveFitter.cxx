@@ -148,6 +148,7 @@ int vtkGeneralizedPrimitiveFitter::RequestData(
   options.Smoothness = this->Smoothness;
   options.Progressions = this->Progressions;
   options.RefinementTolerance = this->RefinementTolerance * std::sqrt(diagonal2);
+  options.ExactRadii = this->ExactRadii;
   std::vector<vtkSmartPointer<vtkPolyData>> meshes(elements.size());
   std::vector<std::string> errors(elements.size());
   const int around = this->AngularResolution;
@@ -225,5 +226,6 @@ void vtkGeneralizedPrimitiveFitter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Smoothness: " << this->Smoothness << "\n";
   os << indent << "Progressions: " << this->Progressions << "\n";
   os << indent << "RefinementTolerance: " << this->RefinementTolerance << "\n";
+  os << indent << "ExactRadii: " << this->ExactRadii << "\n";
   os << indent << "NumberOfFailedElements: " << this->NumberOfFailedElements << "\n";
 }

@@ -100,6 +100,17 @@ public:
   ///@}
 
   ///@{
+  /// Each direction's radius set to where its ray leaves the surface, with
+  /// no smoothing (Smoothness and Progressions unused), and the template
+  /// refined also where the primitive stops short of the surface between
+  /// directions by more than RefinementTolerance. Default off (the paper's
+  /// smooth fit); vtkMedialSkeletalDiagram uses it by default.
+  vtkSetMacro(ExactRadii, vtkTypeBool);
+  vtkGetMacro(ExactRadii, vtkTypeBool);
+  vtkBooleanMacro(ExactRadii, vtkTypeBool);
+  ///@}
+
+  ///@{
   /// Elements whose primitive could not be fitted (outside the surface) in
   /// the last run.
   vtkGetMacro(NumberOfFailedElements, vtkIdType);
@@ -118,6 +129,7 @@ protected:
   double Smoothness = 1.0;
   int Progressions = 20;
   double RefinementTolerance = 0.0025;
+  vtkTypeBool ExactRadii = false;
   vtkIdType NumberOfFailedElements = 0;
 
 private:

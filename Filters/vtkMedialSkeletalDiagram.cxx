@@ -118,6 +118,7 @@ int vtkMedialSkeletalDiagram::RequestData(
   options.AngularResolution = this->AngularResolution;
   options.VertexSubdivisions = this->VertexSubdivisions;
   options.Spacing = this->Spacing;
+  options.Fit.ExactRadii = this->ExactRadii;
   options.Progress = [this](double amount)
   {
     this->UpdateProgress((this->Reconstruct ? 0.6 : 0.95) * amount);
@@ -215,7 +216,9 @@ int vtkMedialSkeletalDiagram::RequestData(
       {
         return 1;
       }
-      medialaxis::TriangleMeshToPolyData(medialaxis::ContourDistanceGrid(grid), reconstruction);
+      medialaxis::TriangleMesh contour = medialaxis::ContourDistanceGrid(grid);
+      medialaxis::KeepComponentsAroundSkeleton(contour, diagram.Points);
+      medialaxis::TriangleMeshToPolyData(contour, reconstruction);
       medialaxis::AddFieldDouble(reconstruction, "GridSpacing", spacing);
     }
   }
@@ -247,6 +250,7 @@ void vtkMedialSkeletalDiagram::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AngularResolution: " << this->AngularResolution << "\n";
   os << indent << "VertexSubdivisions: " << this->VertexSubdivisions << "\n";
   os << indent << "Spacing: " << this->Spacing << "\n";
+  os << indent << "ExactRadii: " << this->ExactRadii << "\n";
   os << indent << "Reconstruct: " << this->Reconstruct << "\n";
   os << indent << "ReconstructionResolution: " << this->ReconstructionResolution << "\n";
   os << indent << "ReachedError: " << this->ReachedError << "\n";

@@ -96,6 +96,17 @@ public:
   ///@}
 
   ///@{
+  /// Whether each primitive's radius in a direction is where its ray leaves
+  /// the surface, with the template refined where the surface lies between
+  /// directions (default on: the closest union), or the smooth fit of
+  /// vtkGeneralizedPrimitiveFitter (off: the paper's, which stops short of
+  /// the surface wherever the radii vary).
+  vtkSetMacro(ExactRadii, vtkTypeBool);
+  vtkGetMacro(ExactRadii, vtkTypeBool);
+  vtkBooleanMacro(ExactRadii, vtkTypeBool);
+  ///@}
+
+  ///@{
   /// Whether output 2 gets the union of the primitives as one closed
   /// surface (default on), and the grid resolution it is contoured at:
   /// cells along the longest side of the union's bounding box (default
@@ -131,6 +142,7 @@ protected:
   int AngularResolution = 32;
   int VertexSubdivisions = 3;
   double Spacing = 0.02;
+  vtkTypeBool ExactRadii = true;
   vtkTypeBool Reconstruct = true;
   int ReconstructionResolution = 128;
   double ReachedError = 0.0;

@@ -440,6 +440,89 @@ TEST(SkeletalPrimitives, RefinementKeepsAPrimitiveInsideAReflexEdge)
   }
 }
 
+// Exact radii on an ellipsoid from its centre: every direction's radius is
+// its ray's exit, and the template is split where the surface lies between
+// directions, outside or inside, farther than the tolerance. The smooth
+// fit stops short wherever the radii vary (towards the long axis's tips);
+// the exact one meets the surface within the tolerance both ways.
+TEST(SkeletalPrimitives, ExactRadiiMeetTheSurfaceBothWays)
+{
+  TriangleMesh ellipsoid = MakeSphere(1.0, 48);
+  for (Point3& p : ellipsoid.Points)
+  {
+    p = { p[0], 0.6 * p[1], 0.4 * p[2] };
+  }
+  const TriangleLocator locator(ellipsoid);
+  PrimitiveFitOptions smooth, exact;
+  smooth.RefinementTolerance = exact.RefinementTolerance = 0.005;
+  exact.ExactRadii = true;
+  exact.RefinementGrowth = 32;
+  exact.MaximumRefinements = 16;
+  auto farthest = [&](const PrimitiveFitOptions& options, double& mean, std::size_t& directions)
+  {
+    PrimitiveTemplate shape = MakeVertexTemplate({ 0, 0, 0 }, 2);
+    const FittedPrimitive fit = FitPrimitiveRefined(ellipsoid, locator, shape, options);
+    EXPECT_TRUE(fit.Error.empty()) << fit.Error;
+    EXPECT_TRUE(ClosedAndConsistent(shape));
+    const TriangleMesh mesh = PrimitiveSurface(shape, fit);
+    const TriangleLocator primitive(mesh);
+    double largest = 0.0, sum = 0.0;
+    for (const Point3& p : ellipsoid.Points)
+    {
+      const double d = primitive.Distance(p);
+      largest = std::max(largest, d);
+      sum += d;
+    }
+    mean = sum / static_cast<double>(ellipsoid.Points.size());
+    directions = shape.Base.size();
+    return largest;
+  };
+  double smoothMean = 0.0, exactMean = 0.0;
+  std::size_t smoothDirections = 0, exactDirections = 0;
+  const double smoothFarthest = farthest(smooth, smoothMean, smoothDirections);
+  const double exactFarthest = farthest(exact, exactMean, exactDirections);
+  std::cout << "ellipsoid from its centre: smooth fit " << smoothFarthest << " (mean " << smoothMean
+            << ", " << smoothDirections << " directions), exact " << exactFarthest << " (mean "
+            << exactMean << ", " << exactDirections << " directions)\n";
+  EXPECT_LE(exactFarthest, 2.0 * exact.RefinementTolerance);
+  EXPECT_LT(exactMean, 0.25 * smoothMean);
+  EXPECT_LT(exactFarthest, 0.5 * smoothFarthest);
+}
+
+// The union's F sampled block by block (LocalSignedDistance) is the same
+// as point by point within the band the grid needs; a face's side decides
+// the sign of TriangleLocator::SignedDistance as Inside does.
+TEST(SkeletalPrimitives, LocalDistanceAgreesWithTheUnion)
+{
+  TriangleMesh left = MakeSphere(1.0, 24), right = MakeSphere(0.6, 16);
+  for (Point3& p : right.Points)
+  {
+    p = p + Point3{ 1.2, 0.3, 0.0 };
+  }
+  const PrimitiveUnion both({ left, right });
+  const TriangleLocator sphere(left);
+  const double radius = 0.1;
+  int compared = 0;
+  for (int i = 0; i < 20; ++i)
+  {
+    const Point3 centre{ -1.3 + 0.16 * i, 0.05 * i - 0.4, 0.3 - 0.02 * i };
+    const auto local = both.LocalSignedDistance(centre, radius);
+    for (const Point3& offset : { Point3{ 0, 0, 0 }, Point3{ 0.05, -0.05, 0.03 },
+           Point3{ -0.04, 0.06, -0.05 }, Point3{ 0.0, 0.0, 0.099 } })
+    {
+      const Point3 x = centre + offset;
+      const double exact = both.SignedDistance(x), f = local(x);
+      EXPECT_EQ(f < 0.0, exact < 0.0) << "at " << x[0] << " " << x[1] << " " << x[2];
+      // Beyond twice the radius only a bound with the right sign is needed.
+      EXPECT_NEAR(f, std::abs(exact) < 2.0 * radius ? exact : f, 1e-9);
+      EXPECT_LE(std::abs(f), std::abs(exact) + 1e-9);
+      EXPECT_EQ(sphere.SignedDistance(x) < 0.0, sphere.Inside(x));
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 80);
+}
+
 // The inside test on a mesh with a fold: a sliver of inverted triangles
 // (a flat tetrahedron, 0.001 thick, turned inside out, as refinement can
 // leave where radii change fast) lies on the first ray from a point outside
@@ -506,6 +589,38 @@ TEST(SkeletalPrimitives, UnionOfPrimitivesIsOneClosedSurface)
   std::cout << "union of two spheres: volume " << volume << " (exact " << exact << "), "
             << surface.Triangles.size() << " triangles\n";
   EXPECT_NEAR(volume, exact, 0.02 * exact);
+}
+
+// A contour's shells that enclose no skeletal point are dropped (a grid
+// point a primitive's fold misled makes one); the rest is renumbered.
+TEST(SkeletalPrimitives, ShellsAroundNoSkeletonAreDropped)
+{
+  TriangleMesh contour = MakeSphere(1.0, 16);
+  const std::size_t points = contour.Points.size(), triangles = contour.Triangles.size();
+  TriangleMesh bubble = MakeSphere(0.05, 4);
+  const Index offset = static_cast<Index>(points);
+  for (const Point3& p : bubble.Points)
+  {
+    contour.Points.push_back(p + Point3{ 1.5, 0, 0 });
+  }
+  for (const Triangle& t : bubble.Triangles)
+  {
+    contour.Triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+  // The bubble first: the renumbering follows the triangles.
+  std::rotate(
+    contour.Triangles.begin(), contour.Triangles.begin() + triangles, contour.Triangles.end());
+  EXPECT_EQ(KeepComponentsAroundSkeleton(contour, { { 0.2, 0.1, 0.0 } }), bubble.Triangles.size());
+  EXPECT_EQ(contour.Triangles.size(), triangles);
+  EXPECT_EQ(contour.Points.size(), points);
+  for (const Point3& p : contour.Points)
+  {
+    EXPECT_NEAR(Norm(p), 1.0, 1e-9);
+  }
+  // One shell: kept as it is, even around no point.
+  TriangleMesh one = MakeSphere(1.0, 8);
+  EXPECT_EQ(KeepComponentsAroundSkeleton(one, {}), 0u);
+  EXPECT_EQ(one.Triangles.size(), MakeSphere(1.0, 8).Triangles.size());
 }
 
 // The error filter measures a closed surface on port 1 (a reconstruction

@@ -15,6 +15,14 @@ DistanceGrid SampleNarrowBand(const Box& bounds, double spacing,
   const std::function<double(const Point3&)>& signedDistance,
   const std::function<bool(double)>& progress, int blockSide)
 {
+  return SampleNarrowBandLocal(
+    bounds, spacing, [&signedDistance](const Point3&, double) { return signedDistance; }, progress,
+    blockSide);
+}
+
+DistanceGrid SampleNarrowBandLocal(const Box& bounds, double spacing, const LocalDistance& local,
+  const std::function<bool(double)>& progress, int blockSide)
+{
   DistanceGrid grid;
   if (bounds.IsEmpty() || !(spacing > 0.0))
   {
@@ -51,6 +59,7 @@ DistanceGrid SampleNarrowBand(const Box& bounds, double spacing,
           const int i1 = std::min(i0 + B, dims[0]), j1 = std::min(j0 + B, dims[1]),
                     k1 = std::min(k0 + B, dims[2]);
           const Point3 centre = point(i0, j0, k0) + (0.5 * (B - 1) * spacing) * Point3{ 1, 1, 1 };
+          const std::function<double(const Point3&)> signedDistance = local(centre, halfDiagonal);
           const double f = signedDistance(centre);
           // Far from the level set: every point of the block has |F| > spacing.
           const bool far = std::abs(f) > halfDiagonal + 1.5 * spacing;

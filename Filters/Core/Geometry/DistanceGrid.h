@@ -40,6 +40,17 @@ struct DistanceGrid
 DistanceGrid SampleNarrowBand(const Box& bounds, double spacing,
   const std::function<double(const Point3&)>& signedDistance,
   const std::function<bool(double)>& progress = nullptr, int blockSide = 8);
+
+/// F made cheaper for the points within `radius` of `centre` (a block's),
+/// e.g. by deciding once which parts of a union are too far to matter.
+using LocalDistance =
+  std::function<std::function<double(const Point3&)>(const Point3& centre, double radius)>;
+
+/// SampleNarrowBand with F localized per block: `local(centre, radius)` is
+/// called once per block and evaluated at its centre and, when the block is
+/// near the level set, at each of its points.
+DistanceGrid SampleNarrowBandLocal(const Box& bounds, double spacing, const LocalDistance& local,
+  const std::function<bool(double)>& progress = nullptr, int blockSide = 8);
 }
 
 #endif

@@ -38,6 +38,14 @@ struct PrimitiveFitOptions
   double StepFraction = 0.1;
   /// Active-set rounds per progression.
   int Iterations = 15;
+  /// Each direction's radius is its ray's exit, with no smoothing (the
+  /// terms above are unused): the primitive meets the surface at every
+  /// template direction, and FitPrimitiveRefined splits the template where
+  /// the surface lies between directions, inside or outside, farther than
+  /// RefinementTolerance. The smooth fit stops short wherever the radii
+  /// vary (by its smoothness over expansion ratio times their Laplacian),
+  /// which is the larger part of its distance to the surface.
+  bool ExactRadii = false;
   /// FitPrimitiveRefined: a template triangle is split where the surface
   /// cuts in between its directions by more than RefinementTolerance
   /// (absolute; 0 never splits), in at most MaximumRefinements rounds, and
@@ -74,7 +82,8 @@ FittedPrimitive FitPrimitive(const TriangleMesh& surface, const TriangleLocator&
 /// inside the primitive deeper than RefinementTolerance; and an edge or
 /// triangle at whose middle (base points averaged, directions averaged
 /// and normalised) the interpolated radius passes the ray's exit from the
-/// surface by more than that (the surface cuts in between surface points).
+/// surface by more than that (the surface cuts in between surface points);
+/// with ExactRadii also where it stops short of the exit by more than that.
 /// Deterministic.
 FittedPrimitive FitPrimitiveRefined(const TriangleMesh& surface, const TriangleLocator& locator,
   PrimitiveTemplate& shape, const PrimitiveFitOptions& options = PrimitiveFitOptions());

@@ -38,6 +38,13 @@ public:
   /// F(x) above. Thread-safe.
   double SignedDistance(const Point3& x) const;
 
+  /// F for the points within `radius` of `centre`: a primitive whose
+  /// surface lies farther than `radius` from the centre contains all of
+  /// them or none, so only the primitives whose surface passes near are
+  /// tested point by point. Thread-safe.
+  std::function<double(const Point3&)> LocalSignedDistance(
+    const Point3& centre, double radius) const;
+
   /// Whether x lies inside primitive i (TriangleLocator::Inside).
   bool Inside(std::size_t i, const Point3& x) const;
 
@@ -49,6 +56,15 @@ private:
   std::unique_ptr<TriangleLocator> AllLocator;
   Box AllBounds;
 };
+
+/// Drops the components of `contour` (a contour of F) that enclose none of
+/// `skeleton`'s points. Every primitive contains its skeletal element, so
+/// each true part of the union does; a small shell around none is a grid
+/// point whose inside test a fold of a primitive misled. Returns the
+/// triangles dropped (their points go too, the others are renumbered in
+/// the order the triangles use them).
+std::size_t KeepComponentsAroundSkeleton(
+  TriangleMesh& contour, const std::vector<Point3>& skeleton);
 
 /// F of the union sampled for contouring: the grid spans the union's bounds
 /// with the given spacing (DistanceGrid.h).

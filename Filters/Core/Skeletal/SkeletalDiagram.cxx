@@ -192,6 +192,12 @@ SkeletalDiagram BuildSkeletalDiagram(
   }
 
   std::map<ElementKey, Fitted> cache;
+  // The insertions go by smooth fits: exact radii on a template not yet
+  // refined follow every long ray (an edge from a neck into a ball), and
+  // the chords between them would call for sites the refined primitive
+  // does not need.
+  PrimitiveFitOptions insertionFit = options.Fit;
+  insertionFit.ExactRadii = false;
   auto fitElement = [&](const ElementKey& key)
   {
     Fitted fitted;
@@ -205,7 +211,7 @@ SkeletalDiagram BuildSkeletalDiagram(
       }
       fitted.Template = MakeElementTemplate(static_cast<SkeletalElement>(key.first), corners,
         options.VertexSubdivisions, options.AngularResolution, spacing);
-      fitted.Fit = FitPrimitive(surface, locator, fitted.Template, options.Fit);
+      fitted.Fit = FitPrimitive(surface, locator, fitted.Template, insertionFit);
     }
     catch (const std::invalid_argument& error)
     {
@@ -349,6 +355,10 @@ SkeletalDiagram BuildSkeletalDiagram(
       {
         for (std::size_t e = range.begin(); e != range.end(); ++e)
         {
+          if (refinement.ExactRadii && !best.Primitives[e].Radius.empty())
+          {
+            best.Primitives[e] = FitPrimitive(surface, locator, best.Templates[e], refinement);
+          }
           RefinePrimitive(surface, locator, best.Templates[e], best.Primitives[e], refinement);
         }
       });

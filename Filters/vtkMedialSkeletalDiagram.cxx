@@ -217,7 +217,10 @@ int vtkMedialSkeletalDiagram::RequestData(
         return 1;
       }
       medialaxis::TriangleMesh contour = medialaxis::ContourDistanceGrid(grid);
-      medialaxis::KeepComponentsAroundSkeleton(contour, diagram.Points);
+      // A part of the union the grid cuts off from the skeleton's vertices
+      // (the middle of an edge's thin primitive) still holds some of its
+      // element.
+      medialaxis::KeepComponentsAroundSkeleton(contour, medialaxis::ElementPoints(diagram, 16));
       medialaxis::TriangleMeshToPolyData(contour, reconstruction);
       medialaxis::AddFieldDouble(reconstruction, "GridSpacing", spacing);
     }

@@ -6,7 +6,11 @@ direction) to each vertex, edge and triangle of it, prints how many of each
 kind and how much of the surface their union reaches, and writes them for
 ParaView (a .vtpc, one block per element, coloured by Radius).
 
-    /usr/bin/python3 generalized_primitives.py [--spheres N] [--output DIR] [mesh file]
+    /usr/bin/python3 generalized_primitives.py [--spheres N] [--exact] [--output DIR] [mesh file]
+
+With --exact each direction's radius is where its ray leaves the surface,
+the template refined where the surface lies between directions (what the
+skeletal diagram uses), instead of the paper's smooth fit.
 
 Without a mesh file a dumbbell is generated (two balls of radius 0.25, 1.2
 apart pole to pole, joined by a neck of radius 0.1).
@@ -23,6 +27,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("mesh", nargs="?", help="OBJ, OFF, PLY, STL, VTP or VTK surface")
     parser.add_argument("--spheres", type=int, default=30, help="skeleton vertices (default 30)")
+    parser.add_argument("--exact", action="store_true",
+                        help="exact radii instead of the smooth fit")
     parser.add_argument("--output", default="output", help="folder for the results")
     args = parser.parse_args()
 
@@ -44,6 +50,7 @@ def main():
     fitter = medialaxis.vtkGeneralizedPrimitiveFitter()
     fitter.SetInputConnection(0, surface.GetOutputPort())
     fitter.SetSkeletonConnection(mat.GetOutputPort(0))
+    fitter.SetExactRadii(args.exact)
     fitter.Update()
     primitives = fitter.GetOutput()
     if primitives.GetNumberOfPartitionedDataSets() == 0:

@@ -58,9 +58,10 @@ private:
 };
 
 /// Drops the components of `contour` (a contour of F) that enclose none of
-/// `skeleton`'s points. Every primitive contains its skeletal element, so
-/// each true part of the union does; a small shell around none is a grid
-/// point whose inside test a fold of a primitive misled. Returns the
+/// `skeleton`'s points (points of the skeletal elements, e.g. vertices and
+/// points along edges). Every primitive contains its skeletal element, so
+/// each true part of the union holds some of it; a small shell around none
+/// is a grid point whose inside test a fold of a primitive misled. Returns the
 /// triangles dropped (their points go too, the others are renumbered in
 /// the order the triangles use them).
 std::size_t KeepComponentsAroundSkeleton(

@@ -366,4 +366,22 @@ SkeletalDiagram BuildSkeletalDiagram(
   }
   return best;
 }
+std::vector<Point3> ElementPoints(const SkeletalDiagram& diagram, int perEdge)
+{
+  std::vector<Point3> points = diagram.Points;
+  for (const auto& e : diagram.Edges)
+  {
+    for (int k = 1; k < perEdge; ++k)
+    {
+      const double t = static_cast<double>(k) / perEdge;
+      points.push_back((1.0 - t) * diagram.Points[e[0]] + t * diagram.Points[e[1]]);
+    }
+  }
+  for (const Triangle& f : diagram.Triangles)
+  {
+    points.push_back(
+      (1.0 / 3.0) * (diagram.Points[f[0]] + diagram.Points[f[1]] + diagram.Points[f[2]]));
+  }
+  return points;
+}
 }

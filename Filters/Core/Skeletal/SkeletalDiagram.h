@@ -92,6 +92,11 @@ struct SkeletalDiagram
   }
 };
 
+/// Points of the skeleton's elements: its vertices, `perEdge` - 1 points
+/// evenly along each edge and each triangle's centroid (each lies in its
+/// element's primitive).
+std::vector<Point3> ElementPoints(const SkeletalDiagram& diagram, int perEdge);
+
 /// Builds the diagram of the closed `surface` (outward) from its simplified
 /// medial mesh. Deterministic. Throws std::invalid_argument for an empty
 /// medial mesh.

@@ -355,9 +355,10 @@ SkeletalDiagram BuildSkeletalDiagram(
       {
         for (std::size_t e = range.begin(); e != range.end(); ++e)
         {
-          if (refinement.ExactRadii && !best.Primitives[e].Radius.empty())
+          if (refinement.ExactRadii)
           {
-            best.Primitives[e] = FitPrimitive(surface, locator, best.Templates[e], refinement);
+            // The smooth fit has each direction's exit already.
+            best.Primitives[e].Radius = best.Primitives[e].MaximumRadius;
           }
           RefinePrimitive(surface, locator, best.Templates[e], best.Primitives[e], refinement);
         }

@@ -6,6 +6,7 @@
 #include "Mesh/MedialMeshQuality.h"
 #include "Screenshot.h"
 #include "Structure/MedialStructure.h"
+#include "Surface/SharpEdgeContent.h"
 #include "vtkAtlasMedialAxisSimplifier.h"
 #include "vtkErrorEventText.h"
 #include "vtkFilletDetector.h"
@@ -18,6 +19,7 @@
 #include "vtkMidSurfaceExtractor.h"
 #include "vtkStructuralMedialAxis.h"
 #include "vtkSurfaceFileReader.h"
+#include "vtkSurfacePreparation.h"
 
 #include "vtkAppendPolyData.h"
 #include "vtkCallbackCommand.h"
@@ -27,6 +29,7 @@
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkLogger.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
 #include "vtkPartitionedDataSetCollection.h"
@@ -71,7 +74,11 @@ and, on request, the files below.
 Options:
   --preset cad|organic  the paper's settings: cad = 50,000 samples, 5,000
                         spheres, sharp features preserved; organic (default)
-                        = 10,000 samples, 1,000 spheres
+                        = 10,000 samples, 1,000 spheres; auto = cad when
+                        the surface's sharp edges form creases at least
+                        1.5 times the square root of its area long (a box
+                        face's rim; filtered normals, so scan noise does not
+                        count), else organic; the report gives the choice
   --samples N           surface samples (overrides the preset)
   --adaptive, --uniform sample thin parts (tentacles, ears, thin plates)
                         densely, by the local thickness, or the whole surface
@@ -201,10 +208,10 @@ struct Options
   int Sharp = -1;            // -1: from the preset
   int Adaptive = -1;         // -1: from the preset
   double MaximumError = 0.0; // 0: --target
-  bool Cad = false, Envelope = false, Correspondence = false, Error = false, Quiet = false,
-       Fillets = false, Structure = false, MidSurface = false, SpikeCollapses = false,
-       ClampRadii = false, AbsorbSpikes = false, QMat = false, FinalFit = true,
-       FitBoundaryRadii = true;
+  bool Cad = false, AutomaticPreset = false, Envelope = false, Correspondence = false,
+       Error = false, Quiet = false, Fillets = false, Structure = false, MidSurface = false,
+       SpikeCollapses = false, ClampRadii = false, AbsorbSpikes = false, QMat = false,
+       FinalFit = true, FitBoundaryRadii = true;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
   double FeatureAngle = 45.0;
@@ -250,14 +257,15 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     {
       if (i + 1 >= argc)
       {
-        return "--preset needs cad or organic";
+        return "--preset needs cad, organic or auto";
       }
       const std::string preset = argv[++i];
-      if (preset != "cad" && preset != "organic")
+      if (preset != "cad" && preset != "organic" && preset != "auto")
       {
-        return "--preset must be cad or organic, got '" + preset + "'";
+        return "--preset must be cad, organic or auto, got '" + preset + "'";
       }
       o.Cad = preset == "cad";
+      o.AutomaticPreset = preset == "auto";
     }
     else if (arg == "--strategy")
     {
@@ -719,6 +727,15 @@ int main(int argc, char** argv)
     return BadInput;
   }
 
+  vtkPolyData* surface = validator->GetOutput();
+  medialaxis::SharpEdgeContent sharpEdges;
+  if (o.AutomaticPreset)
+  {
+    sharpEdges = medialaxis::MeasureSharpEdgeContent(
+      medialaxis::OutwardTriangleMesh(surface), vtkMath::RadiansFromDegrees(o.FeatureAngle));
+    o.Cad = medialaxis::LooksLikeCad(sharpEdges);
+  }
+
   vtkNew<vtkStructuralMedialAxis> structural;
   if (o.Cad)
   {
@@ -936,6 +953,12 @@ int main(int argc, char** argv)
     std::cout << ", two-sided Hausdorff " << hausdorffPercent << "% of the diagonal";
   }
   std::cout << "\n";
+  if (o.AutomaticPreset)
+  {
+    std::cout << "  preset: " << (o.Cad ? "cad" : "organic") << " (sharp-edge creases "
+              << sharpEdges.Ratio() << " times the square root of the area, " << sharpEdges.Creases
+              << " creases)\n";
+  }
   vtkPolyData* filletLines = fillets->GetOutput(0);
   if (o.Fillets)
   {
@@ -992,7 +1015,21 @@ int main(int argc, char** argv)
   {
     std::ostringstream json;
     json.precision(10);
-    json << "{\n  \"input\": " << JsonString(o.Input) << ",\n  \"parameters\": {"
+    json << "{\n  \"input\": " << JsonString(o.Input)
+         << ",\n  \"surface\": {\"points\": " << surface->GetNumberOfPoints()
+         << ", \"triangles\": " << surface->GetNumberOfPolys()
+         << ", \"area\": " << FieldValue(surface, "Area")
+         << ", \"volume\": " << FieldValue(surface, "Volume") << "}"
+         << ",\n  \"preset\": " << (o.Cad ? "\"cad\"" : "\"organic\"")
+         << ", \"preset_chosen\": " << (o.AutomaticPreset ? "\"auto\"" : "\"given\"");
+    if (o.AutomaticPreset)
+    {
+      json << ", \"sharp_edges\": {\"crease_ratio\": " << sharpEdges.Ratio()
+           << ", \"creases\": " << sharpEdges.Creases
+           << ", \"crease_length\": " << sharpEdges.CreaseLength
+           << ", \"sharp_length\": " << sharpEdges.SharpLength << "}";
+    }
+    json << ",\n  \"parameters\": {"
          << "\"samples\": " << structural->GetNumberOfSamples()
          << ", \"adaptive_sampling\": " << (structural->GetAdaptiveSampling() ? "true" : "false")
          << ", \"target\": " << structural->GetTargetNumberOfVertices()

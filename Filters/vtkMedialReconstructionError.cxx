@@ -73,28 +73,6 @@ void AddStatistics(vtkPolyData* output, const ReconstructionErrorResult& r)
   output->GetFieldData()->AddArray(farthest);
 }
 
-// The triangles of a closed surface (polygons fanned), facing outward.
-TriangleMesh OutwardTriangles(vtkPolyData* input)
-{
-  TriangleMesh mesh;
-  mesh.Points.resize(static_cast<std::size_t>(input->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-  {
-    input->GetPoint(i, mesh.Points[i].data());
-  }
-  vtkIdType npts = 0;
-  const vtkIdType* ids = nullptr;
-  vtkCellArray* polys = input->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
-  {
-    for (vtkIdType k = 2; k < npts; ++k)
-    {
-      mesh.Triangles.push_back({ ids[0], ids[k - 1], ids[k] });
-    }
-  }
-  OrientOutward(mesh);
-  return mesh;
-}
 }
 
 vtkMedialReconstructionError::vtkMedialReconstructionError()
@@ -136,7 +114,7 @@ int vtkMedialReconstructionError::RequestData(
   TriangleMesh reconstruction;
   if (reconstructed)
   {
-    reconstruction = OutwardTriangles(medialInput);
+    reconstruction = OutwardTriangleMesh(medialInput);
     // Distances to an open surface are still distances, but its inside is
     // undefined: say so rather than report signs that mean nothing.
     const TriangleAdjacency adjacency = ComputeTriangleAdjacency(reconstruction, 0.0);
@@ -168,7 +146,7 @@ int vtkMedialReconstructionError::RequestData(
       return 0;
     }
   }
-  const TriangleMesh surface = OutwardTriangles(prepared); // prepared: triangles, outward
+  const TriangleMesh surface = OutwardTriangleMesh(prepared); // prepared: triangles, outward
   this->UpdateProgress(0.05);
 
   ReconstructionErrorOptions options;

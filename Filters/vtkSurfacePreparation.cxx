@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vtkSurfacePreparation.h"
 
+#include "Mesh/TriangleAdjacency.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDoubleArray.h"
@@ -101,6 +103,28 @@ void TriangleMeshToPolyData(const TriangleMesh& mesh, vtkPolyData* output)
   output->Initialize();
   output->SetPoints(points);
   output->SetPolys(polys);
+}
+
+TriangleMesh OutwardTriangleMesh(vtkPolyData* input)
+{
+  TriangleMesh mesh;
+  mesh.Points.resize(static_cast<std::size_t>(input->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    input->GetPoint(i, mesh.Points[i].data());
+  }
+  vtkIdType npts = 0;
+  const vtkIdType* ids = nullptr;
+  vtkCellArray* polys = input->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+  {
+    for (vtkIdType k = 2; k < npts; ++k)
+    {
+      mesh.Triangles.push_back({ ids[0], ids[k - 1], ids[k] });
+    }
+  }
+  OrientOutward(mesh);
+  return mesh;
 }
 
 SurfacePreparationReport PrepareSurfacePolyData(

@@ -21,6 +21,10 @@ SurfacePreparationReport PrepareSurfacePolyData(vtkPolyData* input, vtkPolyData*
 SurfacePreparationReport PrepareSurfaceMesh(vtkPolyData* input, TriangleMesh& prepared,
   const SurfacePreparationOptions& options = SurfacePreparationOptions());
 
+/// The triangles of a closed surface (polygons fanned), facing outward,
+/// without the checks of PrepareSurfaceMesh: for a surface that passed them.
+TriangleMesh OutwardTriangleMesh(vtkPolyData* input);
+
 /// Converts a prepared triangle mesh to poly data (points and triangles).
 void TriangleMeshToPolyData(const TriangleMesh& mesh, vtkPolyData* output);
 }

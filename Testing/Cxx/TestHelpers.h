@@ -26,8 +26,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <random>
 #include <string>
 
 namespace medialaxis
@@ -48,6 +51,32 @@ public:
   int Count = 0;
   std::string Last;
 };
+
+// Each vertex moved by a length uniform in [0, amplitude * diagonal] along a
+// uniformly random direction.
+inline TriangleMesh WithNoise(const TriangleMesh& mesh, double amplitude, std::uint64_t seed)
+{
+  Point3 lo = mesh.Points[0], hi = mesh.Points[0];
+  for (const Point3& p : mesh.Points)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  const double reach = amplitude * Norm(hi - lo);
+  std::mt19937_64 random(seed);
+  std::normal_distribution<double> gaussian;
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  TriangleMesh noisy = mesh;
+  for (Point3& p : noisy.Points)
+  {
+    Point3 direction{ gaussian(random), gaussian(random), gaussian(random) };
+    p = p + (reach * uniform(random) / Norm(direction)) * direction;
+  }
+  return noisy;
+}
 
 inline TriangleMesh UnitCube(const Point3& offset = { 0, 0, 0 }, double scale = 1.0)
 {

@@ -13,6 +13,7 @@
 #include "Mesh/MedialMeshQuality.h"
 #include "Sampling/BlueNoiseSampler.h"
 #include "Simplification/AtlasSimplifier.h"
+#include "TestHelpers.h"
 #include "Voronoi/RestrictedVoronoi.h"
 #include "Voronoi/VoronoiMedialAxis.h"
 #include "vtkSurfaceFileReader.h"
@@ -30,6 +31,7 @@
 #include <string>
 
 using namespace medialaxis;
+using test::WithNoise;
 
 namespace
 {
@@ -42,32 +44,6 @@ struct NoisyResult
   std::string Validity;
   double HausdorffPercent = 0.0;
 };
-
-// Each vertex moved by a length uniform in [0, amplitude * diagonal] along a
-// uniformly random direction.
-TriangleMesh WithNoise(const TriangleMesh& mesh, double amplitude, std::uint64_t seed)
-{
-  Point3 lo = mesh.Points[0], hi = mesh.Points[0];
-  for (const Point3& p : mesh.Points)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  }
-  const double reach = amplitude * Norm(hi - lo);
-  std::mt19937_64 random(seed);
-  std::normal_distribution<double> gaussian;
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  TriangleMesh noisy = mesh;
-  for (Point3& p : noisy.Points)
-  {
-    Point3 direction{ gaussian(random), gaussian(random), gaussian(random) };
-    p = p + (reach * uniform(random) / Norm(direction)) * direction;
-  }
-  return noisy;
-}
 
 NoisyResult MedialAxisOf(const TriangleMesh& input, bool cad)
 {

@@ -2,6 +2,7 @@
 // Surface validation and preparation, one defect per small hand-built mesh.
 #include "Geometry/Vec3.h"
 #include "Surface/AnalyticShapes.h"
+#include "Surface/SharpEdgeContent.h"
 #include "Surface/SurfacePreparation.h"
 #include "TestHelpers.h"
 #include "vtkMedialSurfaceValidator.h"
@@ -484,4 +485,36 @@ TEST(MedialSurfaceValidator, RemembersSelfIntersectionsOnlyForAnUnchangedInput)
   EXPECT_TRUE(Contains(first.Error, "the surface passes through itself")) << first.Error;
   EXPECT_EQ(again.Error, first.Error);
   EXPECT_EQ(again.CrossingFarApart, first.CrossingFarApart);
+}
+
+// The automatic preset's measure: creases of a machined part count, smooth
+// and noisy organic surfaces have none.
+TEST(SharpEdgeContent, CubeCylinderSphereAndNoise)
+{
+  const double angle = 0.25 * 3.14159265358979;
+  const SharpEdgeContent cube = MeasureSharpEdgeContent(UnitCube(), angle);
+  EXPECT_NEAR(cube.SharpLength, 12.0, 1e-12); // the face diagonals are flat
+  EXPECT_EQ(cube.Creases, 12);                // corner to corner
+  EXPECT_NEAR(cube.Ratio(), 12.0 / std::sqrt(6.0), 1e-12);
+  EXPECT_TRUE(LooksLikeCad(cube));
+
+  // Two rims of length 2 pi r; area 2 pi r (r + h).
+  const SharpEdgeContent cylinder = MeasureSharpEdgeContent(MakeCylinder(1.0, 2.0, 64), angle);
+  EXPECT_EQ(cylinder.Creases, 2);
+  EXPECT_NEAR(cylinder.Ratio(), 4.0 * M_PI / std::sqrt(6.0 * M_PI), 0.02);
+  EXPECT_TRUE(LooksLikeCad(cylinder));
+
+  const TriangleMesh sphere = MakeSphere(1.0, 48);
+  EXPECT_EQ(MeasureSharpEdgeContent(sphere, angle).SharpLength, 0.0);
+  // Scan-like noise makes some raw normals differ by more than 45 degrees;
+  // the filtered normals do not confirm them, and no crease is long.
+  const TriangleMesh noisy = test::WithNoise(sphere, 0.005, 20261205);
+  const SharpEdgeContent rough = MeasureSharpEdgeContent(noisy, angle, 0);
+  const SharpEdgeContent filtered = MeasureSharpEdgeContent(noisy, angle);
+  EXPECT_GT(rough.SharpLength, 0.0);
+  EXPECT_LT(filtered.SharpLength, 0.5 * rough.SharpLength);
+  EXPECT_FALSE(LooksLikeCad(filtered));
+
+  // A filleted box has no sharp edge: its fillets are smooth.
+  EXPECT_FALSE(LooksLikeCad(MeasureSharpEdgeContent(MakeRoundedBox({ 2, 1, 1 }, 0.2, 8), angle)));
 }

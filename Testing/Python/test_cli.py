@@ -201,6 +201,41 @@ class CommandLineTest(unittest.TestCase):
         self.assertLess(data["hausdorff"]["two_sided_percent"], 5.0)
         self.assertGreater(data["hausdorff"]["two_sided_percent"], 0.0)
 
+    def test_automatic_preset(self):
+        # A sharp box is a CAD part (its 12 edges: 12 / sqrt(area) = 4.9 for a
+        # cube); a sphere is organic. The choice and its measure are reported.
+        cube = vtk.vtkCubeSource()
+        cube.Update()
+        triangles = vtk.vtkTriangleFilter()
+        triangles.SetInputConnection(cube.GetOutputPort())
+        clean = vtk.vtkCleanPolyData()  # the cube source's faces have their own points
+        clean.SetInputConnection(triangles.GetOutputPort())
+        writer = vtk.vtkXMLPolyDataWriter()
+        writer.SetInputConnection(clean.GetOutputPort())
+        writer.SetFileName(self.path("cube.vtp"))
+        self.assertEqual(writer.Write(), 1)
+        for surface, preset, sharp in ((self.path("cube.vtp"), "cad", True),
+                                       (self.write_sphere("sphere.vtp"), "organic", False)):
+            report = self.path("report.json")
+            result = run("--quiet", "--preset", "auto", "--samples", "1000", "--target", "50",
+                         "--report", report, surface, self.path("out"))
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("preset: " + preset, result.stdout)
+            with open(report) as f:
+                data = json.load(f)
+            self.assertEqual(data["preset"], preset)
+            self.assertEqual(data["preset_chosen"], "auto")
+            self.assertEqual(data["parameters"]["preserve_sharp_features"], sharp)
+            self.assertEqual(data["surface"]["triangles"] == 12, sharp)
+            ratio = data["sharp_edges"]["crease_ratio"]
+            self.assertAlmostEqual(ratio, 12 / 6 ** 0.5 if sharp else 0.0, delta=1e-6)
+        result = run("--preset", "cad", "--samples", "1000", "--target", "50", "--report",
+                     report, self.path("cube.vtp"), self.path("out"))
+        with open(report) as f:
+            data = json.load(f)
+        self.assertEqual((data["preset"], data["preset_chosen"]), ("cad", "given"))
+        self.assertNotIn("sharp_edges", data)
+
     def test_mid_surface(self):
         # A T-plate (plate 2 x 2, rib 1 high, walls 0.1 thick): two walls, the
         # plate's and the rib's, 0.1 thick, stitched along the junction.

@@ -30,7 +30,8 @@ packages=(cmake ninja-build g++ ccache pkg-config libvtk9-dev python3-vtk9 libcg
   libeigen3-dev libtbb-dev liblbfgspp-dev libnanoflann-dev libgtest-dev xvfb xauth)
 if [ "$with_paraview" = 1 ]; then
   # Never python3-paraview: it conflicts with python3-vtk9 (see make-paraview-sdk.sh).
-  packages+=(paraview paraview-dev)
+  # mpiexec and mpi4py: medial-axis-batch runs pvbatch on MPI ranks.
+  packages+=(paraview paraview-dev openmpi-bin python3-mpi4py)
 fi
 if [ "$with_robustness" = 1 ]; then
   packages+=(clang-14 libclang-rt-14-dev) # libFuzzer and clang's sanitizer runtimes

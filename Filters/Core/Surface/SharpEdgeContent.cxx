@@ -7,6 +7,7 @@
 #include "Surface/FeatureNormals.h"
 #include "Surface/SurfacePreparation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -38,6 +39,7 @@ SharpEdgeContent MeasureSharpEdgeContent(
   {
     Index A, B;
     double Length;
+    double Angle; // between the two triangles' normals
   };
   std::vector<SharpEdge> sharp;
   for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
@@ -56,15 +58,19 @@ SharpEdgeContent MeasureSharpEdgeContent(
         continue;
       }
       const Index a = mesh.Triangles[t][k], b = mesh.Triangles[t][(k + 1) % 3];
-      sharp.push_back({ a, b, std::sqrt(Distance2(mesh.Points[a], mesh.Points[b])) });
+      const double angle = std::acos(std::clamp(
+        Dot(TriangleNormal(mesh, static_cast<Index>(t)), TriangleNormal(mesh, other)), -1.0, 1.0));
+      sharp.push_back({ a, b, std::sqrt(Distance2(mesh.Points[a], mesh.Points[b])), angle });
       content.SharpLength += sharp.back().Length;
     }
   }
-  // Creases: sharp edges joined where exactly two meet at a vertex and the
-  // line turns there by less than kMaximumTurn. Noise that survives the
-  // filter forms branching, zig-zagging networks, which fall apart into
-  // short pieces; a machined edge runs on smoothly from corner to corner.
-  constexpr double kMaximumTurn = 0.5235987755982988; // 30 degrees
+  // Creases: sharp edges joined where exactly two meet at a vertex, the line
+  // turns there by less than kMaximumTurn and the normals' angle changes by
+  // less than kMaximumAngleChange. Noise that survives the filter forms
+  // branching, zig-zagging networks, which fall apart into short pieces; a
+  // machined edge runs on smoothly, at one angle, from corner to corner.
+  constexpr double kMaximumTurn = 0.5235987755982988;        // 30 degrees
+  constexpr double kMaximumAngleChange = 0.2617993877991494; // 15 degrees
   std::vector<std::vector<std::size_t>> atVertex(mesh.Points.size());
   for (std::size_t e = 0; e < sharp.size(); ++e)
   {
@@ -83,7 +89,8 @@ SharpEdgeContent MeasureSharpEdgeContent(
     const Point3& here = mesh.Points[v];
     const Point3 before = here - mesh.Points[in.A == static_cast<Index>(v) ? in.B : in.A];
     const Point3 after = mesh.Points[out.A == static_cast<Index>(v) ? out.B : out.A] - here;
-    if (Dot(before, after) > std::cos(kMaximumTurn) * Norm(before) * Norm(after))
+    if (Dot(before, after) > std::cos(kMaximumTurn) * Norm(before) * Norm(after) &&
+      std::abs(in.Angle - out.Angle) < kMaximumAngleChange)
     {
       creases.Union(static_cast<Index>(atVertex[v][0]), static_cast<Index>(atVertex[v][1]));
     }

@@ -25,8 +25,10 @@ struct SharpEdgeContent
 /// its two triangles' normals differ by more than `featureAngle` (radians),
 /// both raw and after `normalFiltering` iterations of bilateral normal
 /// filtering (BilateralFaceNormals), so that scan noise is not counted. The
-/// sharp edges are joined into chains where exactly two meet at a vertex and
-/// the line turns there by less than 30 degrees; only chains at least
+/// sharp edges are joined into chains where exactly two meet at a vertex, the
+/// line turns there by less than 30 degrees and the angle between the
+/// normals changes by less than 15 degrees (a machined edge keeps its
+/// angle; a coarse tessellation's ridges come and go); only chains at least
 /// `creaseFraction` * sqrt(area) long count as creases: what is left of
 /// noise after filtering branches and zig-zags into short pieces, and a
 /// coarse tessellation's sharp bits (a tentacle's tip) are short, while the

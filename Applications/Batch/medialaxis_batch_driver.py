@@ -38,14 +38,24 @@ def write_atomically(path, write):
     os.replace(temporary, path)
 
 
+def _parent_death_signal():
+    """prctl(PR_SET_PDEATHSIG), looked up here: between fork and exec the
+    child only calls it (no imports, no library loading)."""
+    try:
+        import ctypes
+        return ctypes.CDLL(None, use_errno=True).prctl
+    except (OSError, AttributeError):
+        return None
+
+
+_PRCTL = _parent_death_signal()
+
+
 def die_with_parent():
     """In the child, before medial-axis starts: killed when its rank dies
     (a killed batch leaves no mesh running on)."""
-    try:
-        import ctypes
-        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
-    except (OSError, AttributeError):
-        pass
+    if _PRCTL is not None:
+        _PRCTL(1, int(signal.SIGKILL))  # 1: PR_SET_PDEATHSIG
 
 
 class MeshRun:

@@ -223,4 +223,16 @@ check(msd_skeleton.GetNumberOfPoints() >= 2 and msd_error <= 0.005,
 check(msd.GetDataInformation(1).GetNumberOfDataSets() == msd_skeleton.GetNumberOfPoints()
       + msd_skeleton.GetNumberOfLines() + msd_skeleton.GetNumberOfPolys(),
       "one primitive per element")
+# An open surface from its unsigned distance: a disk has one boundary.
+disk = Triangulate(Input=Disk(InnerRadius=0.0, OuterRadius=1.0, CircumferentialResolution=64,
+                              RadialResolution=16))
+udf = UnsignedDistanceField(Input=disk, SamplingDimensions=[64, 64, 64])
+sheet = UDFSurface(Input=udf)
+sheet.UpdatePipeline()
+extracted = servermanager.Fetch(sheet, idx=0)
+check(extracted.GetNumberOfPolys() > 100 and
+      extracted.GetFieldData().GetArray("BoundaryLoops").GetValue(0) == 1,
+      "UDF surface of a disk: %d triangles" % extracted.GetNumberOfPolys())
+check(servermanager.Fetch(sheet, idx=1).GetNumberOfPolys() > extracted.GetNumberOfPolys(),
+      "the shell is missing")
 print("pvbatch plugin test passed")

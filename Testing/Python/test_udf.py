@@ -1,0 +1,164 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Surfaces from unsigned distance fields: vtkUnsignedDistanceSource and
+vtkUnsignedDistanceSurfaceExtractor on open, non-orientable and
+non-manifold truths (128^3 grids), and their errors on bad input."""
+import unittest
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+import medialaxis
+import udf_shapes
+
+
+def errors_of(algorithm):
+    """Runs the algorithm; returns the text of its error events."""
+    messages = []
+
+    def record(caller, event, data=None):
+        messages.append(str(data))
+    record.CallDataType = vtk.VTK_STRING
+    algorithm.AddObserver(vtk.vtkCommand.ErrorEvent, record)
+    algorithm.GetExecutive().AddObserver(vtk.vtkCommand.ErrorEvent, record)
+    algorithm.Update()
+    return " ".join(messages)
+
+
+def unsigned_distance(surface, dimensions=128):
+    source = medialaxis.vtkUnsignedDistanceSource()
+    source.SetInputData(surface)
+    source.SetSamplingDimensions(dimensions, dimensions, dimensions)
+    source.Update()
+    return source
+
+
+class UnsignedDistanceTest(unittest.TestCase):
+    def test_the_source_is_exact(self):
+        # Distances to a unit square in z = 0, at grid points, in closed form.
+        square = udf_shapes.polydata([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)],
+                                     [(0, 1, 2), (0, 2, 3)])
+        source = unsigned_distance(square, 24)
+        image = source.GetOutput()
+        self.assertEqual(image.GetDimensions(), (24, 24, 24))
+        spacing = image.GetSpacing()
+        self.assertTrue(spacing[0] == spacing[1] == spacing[2] > 0)
+        values = image.GetPointData().GetArray("UnsignedDistance")
+        self.assertIsNotNone(values)
+        for i in range(0, image.GetNumberOfPoints(), 97):
+            x, y, z = image.GetPoint(i)
+            dx, dy = max(0, -x, x - 1), max(0, -y, y - 1)
+            self.assertAlmostEqual(values.GetValue(i), (dx * dx + dy * dy + z * z) ** 0.5,
+                                   delta=1e-6)
+        # 6 free cells around the square's bounds along x and y.
+        bounds = image.GetBounds()
+        self.assertAlmostEqual(-bounds[0], 6 * spacing[0], delta=1e-9)
+
+    def extract(self, name):
+        truth = udf_shapes.SHAPES[name]()
+        source = unsigned_distance(truth)
+        extractor = medialaxis.vtkUnsignedDistanceSurfaceExtractor()
+        extractor.SetInputConnection(source.GetOutputPort())
+        extractor.Update()
+        return truth, extractor, source.GetOutput().GetSpacing()[0]
+
+    def check_case(self, name, junctions=False):
+        truth, extractor, spacing = self.extract(name)
+        surface = extractor.GetOutput()
+        epsilon = extractor.GetUsedEpsilon()
+        self.assertAlmostEqual(epsilon, 2 * spacing)
+        self.assertGreater(surface.GetNumberOfPolys(), 1000)
+        hausdorff, chamfer = udf_shapes.compare(surface, truth)
+        self.assertLessEqual(hausdorff, spacing, name)
+        self.assertLessEqual(chamfer, 0.25 * spacing, name)
+        loops, junction_edges = udf_shapes.edge_counts(surface)
+        truth_loops, _ = udf_shapes.edge_counts(truth)
+        self.assertEqual(loops, truth_loops, name)
+        self.assertEqual(surface.GetFieldData().GetArray("BoundaryLoops").GetValue(0), loops)
+        if junctions:
+            self.assertGreater(junction_edges, 0, name)
+        else:
+            self.assertEqual(junction_edges, 0, name)
+        doubled, probed = udf_shapes.double_layer_triangles(surface, epsilon)
+        self.assertGreater(probed, 0.5 * surface.GetNumberOfPolys())
+        self.assertEqual(doubled, 0, name)
+        # Spheres of radius epsilon around the surface (larger at junctions,
+        # where the shell's sides meet farther out).
+        radius = vtk_to_numpy(surface.GetPointData().GetArray("ShellRadius"))
+        self.assertGreaterEqual(radius.min(), 0.5 * epsilon)
+        self.assertAlmostEqual(np.median(radius) / epsilon, 1.0, delta=0.05)
+        return surface
+
+    def test_disk(self):
+        self.check_case("disk")
+
+    def test_hemisphere(self):
+        self.check_case("hemisphere")
+
+    def test_moebius_strip(self):
+        self.check_case("moebius")
+
+    def test_three_half_planes(self):
+        self.check_case("half_planes", junctions=True)
+
+    def test_garment(self):
+        self.check_case("garment")
+
+    def test_the_layer_measure_sees_two_layers(self):
+        # A disk and a copy of it one epsilon above: every probed triangle
+        # has a second layer; the disk alone has none.
+        disk = udf_shapes.disk()
+        lifted = vtk.vtkTransform()
+        lifted.Translate(0, 0, 0.03)
+        moved = vtk.vtkTransformPolyDataFilter()
+        moved.SetInputData(disk)
+        moved.SetTransform(lifted)
+        both = vtk.vtkAppendPolyData()
+        both.AddInputData(disk)
+        both.AddInputConnection(moved.GetOutputPort())
+        both.Update()
+        doubled, probed = udf_shapes.double_layer_triangles(both.GetOutput(), 0.03)
+        self.assertGreater(probed, 0)
+        self.assertEqual(doubled, probed)
+        self.assertEqual(udf_shapes.double_layer_triangles(disk, 0.03)[0], 0)
+
+    def test_same_result_every_run(self):
+        first = self.extract("disk")[1].GetOutput()
+        second = self.extract("disk")[1].GetOutput()
+        a = first.GetPoints().GetData()
+        b = second.GetPoints().GetData()
+        self.assertEqual(a.GetNumberOfTuples(), b.GetNumberOfTuples())
+        self.assertTrue(all(a.GetTuple3(i) == b.GetTuple3(i) for i in range(a.GetNumberOfTuples())))
+
+    def test_bad_input(self):
+        image = vtk.vtkImageData()
+        image.SetDimensions(16, 16, 16)
+        extractor = medialaxis.vtkUnsignedDistanceSurfaceExtractor()
+        extractor.SetInputData(image)
+        self.assertIn("no unsigned distance array", errors_of(extractor))
+
+        # A signed distance (a sphere's) is refused.
+        values = np.array([np.linalg.norm(image.GetPoint(i)[:3] - np.array([7.5, 7.5, 7.5])) - 4
+                           for i in range(image.GetNumberOfPoints())])
+        array = numpy_to_vtk(values, deep=1)
+        array.SetName("Distance")
+        image.GetPointData().SetScalars(array)
+        extractor.Modified()
+        self.assertIn("negative values", errors_of(extractor))
+
+        # Its absolute value is an unsigned distance: Epsilon below the
+        # spacing is refused, and so is a shell cut by the grid's border.
+        image.GetPointData().SetScalars(numpy_to_vtk(np.abs(values), deep=1))
+        extractor.SetEpsilon(0.5)
+        extractor.Modified()
+        self.assertIn("below the grid's spacing", errors_of(extractor))
+        extractor.SetEpsilon(4.0)
+        self.assertIn("reaches the grid's border", errors_of(extractor))
+
+        source = medialaxis.vtkUnsignedDistanceSource()
+        source.SetInputData(vtk.vtkPolyData())
+        self.assertIn("no polygons", errors_of(source))
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -7,6 +7,8 @@
 #include "Screenshot.h"
 #include "Structure/MedialStructure.h"
 #include "Surface/SharpEdgeContent.h"
+#include "ToolSupport.h"
+#include "UdfCommand.h"
 #include "vtkAtlasMedialAxisSimplifier.h"
 #include "vtkErrorEventText.h"
 #include "vtkFilletDetector.h"
@@ -40,6 +42,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -52,6 +55,8 @@
 
 namespace
 {
+using namespace medialaxis::tool;
+
 enum ExitCode
 {
   Ok = 0,
@@ -64,9 +69,12 @@ void PrintHelp()
 {
   std::cout <<
     R"(Usage: medial-axis [options] INPUT OUTPUT_DIR
+       medial-axis --udf [--epsilon E] [--snap] FIELD OUTPUT_DIR
 
 Computes the Structural Medial Axis Transform of the closed triangle surface
-INPUT (OBJ, OFF, PLY, STL, VTP or VTK) and writes into OUTPUT_DIR:
+INPUT (OBJ, OFF, PLY, STL, VTP or VTK) or, with --udf, the surface of an
+unsigned distance field (the medial axis of its epsilon-shell), and writes
+into OUTPUT_DIR:
   mat.ma, mat.vtp       the simplified medial mesh (spheres: points with point
                         data Radius; slabs: triangles; cones: lines)
 and, on request, the files below.
@@ -187,6 +195,20 @@ Options:
                         memory, counts, Euler characteristic, triangle quality
                         and (with --error) the Hausdorff distances
   --quiet               no progress bar (it is shown only on a terminal)
+  --udf                 INPUT is an unsigned distance field, not a surface:
+                        .vti or legacy .vtk image data (point data: the
+                        distance; --array NAME picks the array) or a 3-D
+                        float .npy array a[i, j, k] (x along i) with
+                        --spacing S [--origin X Y Z]; writes surface.vtp
+                        (the extracted surface, open boundaries and
+                        junctions kept; point data ShellRadius) and
+                        shell.vtp (the epsilon-shell), and with --report the
+                        counts (boundary loops, junction edges) and times
+  --epsilon E           with --udf: the shell's distance from the surface
+                        (default: twice the grid spacing; at least the
+                        spacing)
+  --snap                with --udf: project the points onto the field's zero
+                        set
   -h, --help            this text
 
 Environment: the tool starts itself again with glibc's heap tuned for large
@@ -219,6 +241,8 @@ struct Options
   double SpikeRepair = 10.0;
   int Seed = 0, Threads = 0;
   int SkeletalDiagram = 0; // most elements; 0: none
+  bool Udf = false;        // INPUT is an unsigned distance field
+  medialaxis::tool::UdfOptions UdfRun;
 };
 
 bool ParseNumber(const std::string& text, double& value)
@@ -466,6 +490,41 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     {
       o.Quiet = true;
     }
+    else if (arg == "--udf" || arg == "--snap")
+    {
+      (arg == "--udf" ? o.Udf : o.UdfRun.Snap) = true;
+    }
+    else if (arg == "--epsilon" || arg == "--spacing")
+    {
+      if (!(problem = value(number)).empty())
+      {
+        return problem;
+      }
+      if (!(number > 0.0) || !std::isfinite(number))
+      {
+        return arg + " must be a positive length";
+      }
+      (arg == "--epsilon" ? o.UdfRun.Epsilon : o.UdfRun.Spacing) = number;
+    }
+    else if (arg == "--origin")
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        if (!(problem = value(number)).empty())
+        {
+          return "--origin needs three numbers X Y Z";
+        }
+        o.UdfRun.Origin[k] = number;
+      }
+    }
+    else if (arg == "--array")
+    {
+      if (i + 1 >= argc)
+      {
+        return "--array needs the name of the distance array";
+      }
+      o.UdfRun.Array = argv[++i];
+    }
     else if (!arg.empty() && arg[0] == '-')
     {
       return "unknown option " + arg + " (see --help)";
@@ -486,66 +545,6 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
   o.Input = positional[0];
   o.OutputDir = positional[1];
   return "";
-}
-
-// Progress bar on stderr, redrawn when the percentage changes.
-struct ProgressBar
-{
-  std::string Label;
-  int Last = -1;
-  static void Callback(vtkObject* caller, unsigned long, void* clientData, void*)
-  {
-    auto* self = static_cast<ProgressBar*>(clientData);
-    const double f = static_cast<vtkAlgorithm*>(caller)->GetProgress();
-    const int percent = static_cast<int>(100.0 * f);
-    if (percent == self->Last)
-    {
-      return;
-    }
-    self->Last = percent;
-    const int width = 40, filled = percent * width / 100;
-    std::fprintf(stderr, "\r%-12s [%s%s] %3d%%", self->Label.c_str(),
-      std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(), percent);
-    if (percent >= 100)
-    {
-      std::fputc('\n', stderr);
-    }
-    std::fflush(stderr);
-  }
-};
-
-// Collects the last error of an algorithm (printed by us, not by VTK).
-struct LastError
-{
-  std::string Message;
-  static void Callback(vtkObject*, unsigned long, void* clientData, void* callData)
-  {
-    static_cast<LastError*>(clientData)->Message = medialaxis::ErrorEventMessage(callData);
-  }
-};
-
-void Observe(vtkAlgorithm* algorithm, LastError& error, ProgressBar* bar)
-{
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetCallback(&LastError::Callback);
-  onError->SetClientData(&error);
-  algorithm->AddObserver(vtkCommand::ErrorEvent, onError);
-  if (bar)
-  {
-    vtkNew<vtkCallbackCommand> onProgress;
-    onProgress->SetCallback(&ProgressBar::Callback);
-    onProgress->SetClientData(bar);
-    algorithm->AddObserver(vtkCommand::ProgressEvent, onProgress);
-  }
-}
-
-bool WriteVtp(vtkPolyData* data, const std::string& path)
-{
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(data);
-  writer->SetFileName(path.c_str());
-  writer->SetDataModeToBinary();
-  return writer->Write() == 1;
 }
 
 // Writes a stage's outputs, one file name per port, and notes them.
@@ -595,61 +594,6 @@ vtkSmartPointer<vtkPolyData> JoinPrimitives(vtkPartitionedDataSetCollection* pri
   return joined;
 }
 
-// Updates a stage after the one-click filter, timing it; prints what failed
-// and returns false on an error.
-bool UpdateStage(vtkAlgorithm* stage, const char* what, ProgressBar* bar, double& seconds)
-{
-  LastError error;
-  Observe(stage, error, bar);
-  const auto begin = std::chrono::steady_clock::now();
-  stage->Update();
-  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  stage->RemoveObservers(vtkCommand::ErrorEvent);
-  stage->RemoveObservers(vtkCommand::ProgressEvent);
-  if (!error.Message.empty())
-  {
-    std::cerr << "medial-axis: " << what << " failed: " << error.Message << "\n";
-    return false;
-  }
-  return true;
-}
-
-double FieldValue(vtkPolyData* data, const char* name)
-{
-  vtkDataArray* a = data->GetFieldData()->GetArray(name);
-  return a && a->GetNumberOfTuples() > 0 ? a->GetComponent(0, 0) : 0.0;
-}
-
-std::string JsonString(const std::string& s)
-{
-  std::string out = "\"";
-  for (char c : s)
-  {
-    if (c == '"' || c == '\\')
-    {
-      out += '\\';
-      out += c;
-    }
-    else if (static_cast<unsigned char>(c) < 0x20)
-    {
-      char buffer[8];
-      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-      out += buffer;
-    }
-    else
-    {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
-double PeakMegabytes()
-{
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
 }
 
 int main(int argc, char** argv)
@@ -670,6 +614,19 @@ int main(int argc, char** argv)
   {
     std::cerr << "medial-axis: " << problem << "\n";
     return BadArguments;
+  }
+  if (o.Udf)
+  {
+    medialaxis::tool::UdfOptions& udf = o.UdfRun;
+    udf.Field = o.Input;
+    udf.OutputDir = o.OutputDir;
+    udf.Report = o.Report;
+    udf.Samples = o.Samples > 0 ? o.Samples : 0;
+    udf.Target = o.Target > 0 ? o.Target : 0;
+    udf.Seed = o.Seed;
+    udf.Threads = o.Threads;
+    udf.Quiet = o.Quiet;
+    return medialaxis::tool::RunUdf(udf);
   }
   // Offscreen rendering needs an X display: run under a virtual one.
   if (!o.Screenshot.empty() && !std::getenv("DISPLAY"))

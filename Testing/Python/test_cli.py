@@ -236,6 +236,59 @@ class CommandLineTest(unittest.TestCase):
         self.assertEqual((data["preset"], data["preset_chosen"]), ("cad", "given"))
         self.assertNotIn("sharp_edges", data)
 
+    def test_unsigned_distance_field(self):
+        # A disk's unsigned distance as .vti and as .npy (a[i, j, k], x along
+        # i): the same surface from both, one boundary loop.
+        import numpy as np
+        from vtk.util.numpy_support import vtk_to_numpy
+        disk = vtk.vtkDiskSource()
+        disk.SetInnerRadius(0.0)
+        disk.SetCircumferentialResolution(64)
+        disk.SetRadialResolution(16)
+        source = medialaxis.vtkUnsignedDistanceSource()
+        source.SetInputConnection(disk.GetOutputPort())
+        source.SetSamplingDimensions(48, 48, 48)
+        source.Update()
+        image = source.GetOutput()
+        writer = vtk.vtkXMLImageDataWriter()
+        writer.SetInputData(image)
+        writer.SetFileName(self.path("disk.vti"))
+        self.assertEqual(writer.Write(), 1)
+        values = vtk_to_numpy(image.GetPointData().GetArray("UnsignedDistance"))
+        np.save(self.path("disk.npy"), values.reshape(48, 48, 48).transpose(2, 1, 0))
+        spacing = image.GetSpacing()[0]
+        origin = [str(x) for x in image.GetOrigin()]
+        counts = []
+        for field, extra in (("disk.vti", []),
+                             ("disk.npy", ["--spacing", repr(spacing), "--origin"] + origin)):
+            report = self.path("udf.json")
+            result = run("--udf", *extra, "--report", report, self.path(field), self.path("out"))
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("1 boundary loops", result.stdout)
+            with open(report) as f:
+                data = json.load(f)
+            self.assertAlmostEqual(data["epsilon"], 2 * spacing, delta=1e-9)
+            self.assertEqual(data["counts"]["boundary_loops"], 1)
+            self.assertTrue(os.path.getsize(self.path("out/surface.vtp")) > 0)
+            counts.append(data["counts"]["triangles"])
+        self.assertEqual(counts[0], counts[1])
+        # Bad fields and arguments.
+        result = run("--udf", self.path("disk.npy"), self.path("out"))
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("--spacing", result.stderr)
+        result = run("--udf", "--epsilon", repr(0.5 * spacing), self.path("disk.vti"),
+                     self.path("out"))
+        self.assertEqual(result.returncode, 3)
+        self.assertIn("below the grid's spacing", result.stderr)
+        np.save(self.path("signed.npy"), values.reshape(48, 48, 48) - 0.1)
+        result = run("--udf", "--spacing", "0.1", self.path("signed.npy"), self.path("out"))
+        self.assertEqual(result.returncode, 3)
+        self.assertIn("negative values", result.stderr)
+        np.save(self.path("flat.npy"), values.reshape(48, 2304))
+        result = run("--udf", "--spacing", "0.1", self.path("flat.npy"), self.path("out"))
+        self.assertEqual(result.returncode, 3)
+        self.assertIn("a 3-D array is needed", result.stderr)
+
     def test_mid_surface(self):
         # A T-plate (plate 2 x 2, rib 1 high, walls 0.1 thick): two walls, the
         # plate's and the rib's, 0.1 thick, stitched along the junction.

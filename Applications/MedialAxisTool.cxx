@@ -649,11 +649,8 @@ int main(int argc, char** argv)
                  "xvfb)\n";
     return BadArguments;
   }
-  std::error_code ec;
-  std::filesystem::create_directories(o.OutputDir, ec);
-  if (ec || !std::filesystem::is_directory(o.OutputDir))
+  if (!MakeOutputFolder(o.OutputDir))
   {
-    std::cerr << "medial-axis: cannot create the output folder " << o.OutputDir << "\n";
     return BadArguments;
   }
   const bool showProgress = !o.Quiet && isatty(STDERR_FILENO);

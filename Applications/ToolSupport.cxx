@@ -12,6 +12,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 
 namespace medialaxis
@@ -95,6 +96,18 @@ double PeakMegabytes()
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+bool MakeOutputFolder(const std::string& folder)
+{
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec || !std::filesystem::is_directory(folder))
+  {
+    std::cerr << "medial-axis: cannot create the output folder " << folder << "\n";
+    return false;
+  }
+  return true;
 }
 }
 }

@@ -71,6 +71,10 @@ double FieldValue(vtkPolyData* data, const char* name);
 /// A JSON string literal.
 std::string JsonString(const std::string& s);
 
+/// Creates the output folder (and its parents); prints why and returns
+/// false when it cannot.
+bool MakeOutputFolder(const std::string& folder);
+
 /// The process's peak resident memory, in MB.
 double PeakMegabytes();
 }

@@ -134,11 +134,8 @@ int RunUdf(const UdfOptions& o)
     std::cerr << "medial-axis: " << problem << "\n";
     return code;
   }
-  std::error_code ec;
-  std::filesystem::create_directories(o.OutputDir, ec);
-  if (ec || !std::filesystem::is_directory(o.OutputDir))
+  if (!MakeOutputFolder(o.OutputDir))
   {
-    std::cerr << "medial-axis: cannot create the output folder " << o.OutputDir << "\n";
     return BadArguments;
   }
   vtkNew<vtkUnsignedDistanceSurfaceExtractor> extractor;

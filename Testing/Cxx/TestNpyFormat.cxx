@@ -97,4 +97,10 @@ TEST(NpyFormat, ErrorsNameTheProblem)
   EXPECT_NE(Parse(Npy("{'descr': '<f8', 'fortran_order': False, 'shape': (0, 2, 3), }", data))
               .Error.find("empty or too large"),
     std::string::npos);
+  // A dimension too long for any integer (found by fuzzing).
+  EXPECT_NE(Parse(Npy("{'descr': '<f8', 'fortran_order': False, 'shape': "
+                      "(31111111111111111111111111, 1, 1), }",
+                    data))
+              .Error.find("empty or too large"),
+    std::string::npos);
 }

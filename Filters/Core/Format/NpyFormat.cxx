@@ -106,7 +106,8 @@ NpyVolume ParseNpyVolume(std::istream& input)
   std::size_t count = 1;
   for (int a = 0; a < 3; ++a)
   {
-    const unsigned long long n = std::stoull(match[a + 1].str());
+    const std::string digits = match[a + 1].str();
+    const unsigned long long n = digits.size() > 9 ? 0 : std::stoull(digits);
     if (n == 0 || n > (1ull << 20) || count > std::numeric_limits<std::size_t>::max() / n / 8)
     {
       volume.Error = "the array's shape " + shape + " is empty or too large";
@@ -115,6 +116,19 @@ NpyVolume ParseNpyVolume(std::istream& input)
     volume.Shape[a] = static_cast<std::size_t>(n);
     count *= volume.Shape[a];
   }
+  // Short data is refused before anything that size is allocated.
+  const std::streampos here = input.tellg();
+  if (here != std::streampos(-1) && input.seekg(0, std::ios::end))
+  {
+    const std::streamoff left = input.tellg() - here;
+    input.seekg(here);
+    if (left < 0 || static_cast<std::size_t>(left) < count * itemSize)
+    {
+      volume.Error = "the .npy data is cut short: " + std::to_string(count) + " values expected";
+      return volume;
+    }
+  }
+  input.clear();
   std::vector<char> raw(count * itemSize);
   if (!input.read(raw.data(), static_cast<std::streamsize>(raw.size())))
   {

@@ -24,8 +24,9 @@ parser.add_argument("cases", nargs="*", default=list(udf_shapes.SHAPES))
 args = parser.parse_args()
 
 print("| case | triangles | Hausdorff (spacings) | Chamfer (spacings) | boundary loops (truth) "
-      "| junction edges (truth) | second layers | UDF s | extraction s |")
-print("|---|---|---|---|---|---|---|---|---|")
+      "| junction edges (truth) | junction length (truth) | junction offset (spacings) "
+      "| second layers | UDF s | extraction s |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
 for name in args.cases:
     truth = udf_shapes.SHAPES[name]()
     start = time.perf_counter()
@@ -45,7 +46,9 @@ for name in args.cases:
     loops, junctions = udf_shapes.edge_counts(surface)
     truth_loops, truth_junctions = udf_shapes.edge_counts(truth)
     doubled, probed = udf_shapes.double_layer_triangles(surface, extractor.GetUsedEpsilon())
-    print("| %s | %d | %.3f | %.4f | %d (%d) | %d (%d) | %d of %d | %.1f | %.1f |" % (
-        name, surface.GetNumberOfPolys(), hausdorff / spacing, chamfer / spacing, loops,
-        truth_loops, junctions, truth_junctions, doubled, probed, sampled - start,
-        done - sampled), flush=True)
+    print("| %s | %d | %.3f | %.4f | %d (%d) | %d (%d) | %.3f (%.3f) | %.3f | %d of %d | %.1f "
+          "| %.1f |" % (name, surface.GetNumberOfPolys(), hausdorff / spacing, chamfer / spacing,
+                        loops, truth_loops, junctions, truth_junctions,
+                        udf_shapes.junction_length(surface), udf_shapes.junction_length(truth),
+                        udf_shapes.junction_offset(surface, truth) / spacing, doubled, probed,
+                        sampled - start, done - sampled), flush=True)

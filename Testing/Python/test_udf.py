@@ -76,7 +76,10 @@ class UnsignedDistanceTest(unittest.TestCase):
         self.assertEqual(loops, truth_loops, name)
         self.assertEqual(surface.GetFieldData().GetArray("BoundaryLoops").GetValue(0), loops)
         if junctions:
-            self.assertGreater(junction_edges, 0, name)
+            # The junction line, on the truth's and as long (its edges are finer).
+            self.assertLessEqual(udf_shapes.junction_offset(surface, truth), spacing)
+            self.assertAlmostEqual(udf_shapes.junction_length(surface),
+                                   udf_shapes.junction_length(truth), delta=4 * spacing)
         else:
             self.assertEqual(junction_edges, 0, name)
         doubled, probed = udf_shapes.double_layer_triangles(surface, epsilon)

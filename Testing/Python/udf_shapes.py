@@ -137,6 +137,40 @@ def edge_counts(surface):
     return loops, sum(1 for count in uses.values() if count > 2)
 
 
+def junction_edges(surface):
+    """The edges of three or more triangles, as line cells."""
+    uses = {}
+    for t in triangles_of(surface):
+        for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0])):
+            key = (min(a, b), max(a, b))
+            uses[key] = uses.get(key, 0) + 1
+    lines = vtk.vtkCellArray()
+    for (a, b), count in uses.items():
+        if count > 2:
+            lines.InsertNextCell(2, [int(a), int(b)])
+    junction = vtk.vtkPolyData()
+    junction.SetPoints(surface.GetPoints())
+    junction.SetLines(lines)
+    return junction
+
+
+def junction_length(surface):
+    """Total length of the edges of three or more triangles."""
+    p = vtk_to_numpy(surface.GetPoints().GetData())
+    lines = vtk_to_numpy(junction_edges(surface).GetLines().GetData()).reshape(-1, 3)[:, 1:]
+    return float(np.linalg.norm(p[lines[:, 0]] - p[lines[:, 1]], axis=1).sum())
+
+
+def junction_offset(surface, truth):
+    """Farthest distance from a junction edge's midpoint of `surface` to the
+    junction edges of `truth`."""
+    p = vtk_to_numpy(surface.GetPoints().GetData())
+    lines = vtk_to_numpy(junction_edges(surface).GetLines().GetData()).reshape(-1, 3)[:, 1:]
+    if len(lines) == 0:
+        return 0.0
+    return float(Distance(junction_edges(truth))(0.5 * (p[lines[:, 0]] + p[lines[:, 1]])).max())
+
+
 def sample_points(surface):
     """Vertices, triangle centroids and edge midpoints."""
     p = vtk_to_numpy(surface.GetPoints().GetData())

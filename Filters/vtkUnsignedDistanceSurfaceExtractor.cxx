@@ -22,6 +22,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkResampleToImage.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,7 +39,7 @@ vtkUnsignedDistanceSurfaceExtractor::vtkUnsignedDistanceSurfaceExtractor()
 
 int vtkUnsignedDistanceSurfaceExtractor::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   return 1;
 }
 
@@ -63,10 +65,69 @@ double BorderMinimum(const medialaxis::RegularField& f)
 }
 }
 
+vtkSmartPointer<vtkImageData> vtkUnsignedDistanceSurfaceExtractor::ResampleToImage(
+  vtkDataSet* input, vtkDataArray* udf)
+{
+  double bounds[6];
+  input->GetBounds(bounds);
+  const double longest =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  if (!(longest > 0.0) || input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro(<< "the input data set has no extent: nothing to resample");
+    return nullptr;
+  }
+  const double spacing = longest / (this->ResampleDimension - 1);
+  int dimensions[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    dimensions[a] = std::max(
+      3, static_cast<int>(std::floor((bounds[2 * a + 1] - bounds[2 * a]) / spacing + 1e-9)) + 1);
+    bounds[2 * a + 1] = bounds[2 * a] + spacing * (dimensions[a] - 1);
+  }
+  vtkSmartPointer<vtkDataSet> only;
+  only.TakeReference(input->NewInstance());
+  only->CopyStructure(input);
+  only->GetPointData()->SetScalars(udf);
+  vtkNew<vtkResampleToImage> resample;
+  resample->SetInputDataObject(only);
+  resample->UseInputBoundsOff();
+  resample->SetSamplingBounds(bounds);
+  resample->SetSamplingDimensions(dimensions);
+  resample->Update();
+  vtkImageData* sampled = resample->GetOutput();
+  vtkDataArray* values = sampled->GetPointData()->GetArray(udf->GetName() ? udf->GetName() : "");
+  if (!values)
+  {
+    values = sampled->GetPointData()->GetScalars();
+  }
+  vtkDataArray* valid = sampled->GetPointData()->GetArray("vtkValidPointMask");
+  if (!values)
+  {
+    vtkErrorMacro(<< "resampling the input onto a grid gave no distance values");
+    return nullptr;
+  }
+  vtkNew<vtkDoubleArray> distance;
+  distance->SetName("UnsignedDistance");
+  distance->SetNumberOfTuples(values->GetNumberOfTuples());
+  const double far = udf->GetRange(0)[1];
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    const bool inside = !valid || valid->GetComponent(i, 0) != 0.0;
+    distance->SetValue(i, inside ? values->GetComponent(i, 0) : far);
+  }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(dimensions);
+  image->SetOrigin(bounds[0], bounds[2], bounds[4]);
+  image->SetSpacing(spacing, spacing, spacing);
+  image->GetPointData()->SetScalars(distance);
+  return image;
+}
+
 int vtkUnsignedDistanceSurfaceExtractor::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkImageData* image = vtkImageData::GetData(inputVector[0]);
+  vtkDataSet* input = vtkDataSet::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* shellOutput = vtkPolyData::GetData(outputVector, 1);
   output->Initialize();
@@ -77,9 +138,9 @@ int vtkUnsignedDistanceSurfaceExtractor::RequestData(
   // The array chosen, else the active scalars, else the first point array
   // of one component (what ParaView's array menu holds before the first run).
   vtkDataArray* udf = this->GetInputArrayToProcess(0, inputVector);
-  if (image && !udf)
+  if (input && !udf)
   {
-    vtkPointData* points = image->GetPointData();
+    vtkPointData* points = input->GetPointData();
     udf = points->GetScalars();
     for (int a = 0; !udf && a < points->GetNumberOfArrays(); ++a)
     {
@@ -87,11 +148,23 @@ int vtkUnsignedDistanceSurfaceExtractor::RequestData(
       udf = candidate && candidate->GetNumberOfComponents() == 1 ? candidate : nullptr;
     }
   }
-  if (!image || !udf || udf->GetNumberOfComponents() != 1)
+  if (!input || !udf || udf->GetNumberOfComponents() != 1)
   {
-    vtkErrorMacro(<< "the input image has no unsigned distance array: give its point data "
-                     "one scalar array (or choose it with SetInputArrayToProcess)");
+    vtkErrorMacro(<< "the input has no unsigned distance array: give its point data one scalar "
+                     "array (or choose it with SetInputArrayToProcess)");
     return 0;
+  }
+  // Other data sets are resampled onto a grid of cubic cells over their
+  // bounds; points outside the data set count as far from the surface.
+  vtkSmartPointer<vtkImageData> image = vtkImageData::SafeDownCast(input);
+  if (!image)
+  {
+    image = this->ResampleToImage(input, udf);
+    if (!image)
+    {
+      return 0;
+    }
+    udf = image->GetPointData()->GetScalars();
   }
   int dimensions[3];
   image->GetDimensions(dimensions);
@@ -245,6 +318,7 @@ void vtkUnsignedDistanceSurfaceExtractor::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "Epsilon: " << this->Epsilon << "\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
   os << indent << "TargetNumberOfVertices: " << this->TargetNumberOfVertices << "\n";
+  os << indent << "ResampleDimension: " << this->ResampleDimension << "\n";
   os << indent << "SnapToZeroSet: " << this->SnapToZeroSet << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";

@@ -22,10 +22,13 @@
  *    edges of three or more triangles);
  * 4. optionally projects the points onto the UDF's zero set (SnapToZeroSet).
  *
- * Input: a vtkImageData whose point data holds the UDF (the array chosen
+ * Input: a vtkImageData (or any vtkDataSet, resampled with
+ * vtkResampleToImage onto cubic cells, ResampleDimension points along its
+ * longest side; points outside the data set count as far from the surface)
+ * whose point data holds the UDF (the array chosen
  * with SetInputArrayToProcess(0, 0, 0, POINTS, name); default: the active
- * scalars, else the first point array of one component). Output 0: the extracted surface as triangles, open boundaries
- * kept as boundaries and junctions as edges of three or more triangles;
+ * scalars, else the first point array of one component). Output 0: the extracted surface as
+ * triangles, open boundaries kept as boundaries and junctions as edges of three or more triangles;
  * point data `ShellRadius` (the sphere's radius, about Epsilon: a
  * diagnostic) and `MedialVertexId`; field data `Epsilon`, `ShellArea`,
  * `Samples`, `Spheres`, `BoundaryLoops`, `JunctionEdges`,
@@ -41,6 +44,11 @@
 
 #include "vtkMedialAxisFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h"
+
+class vtkDataArray;
+class vtkDataSet;
+class vtkImageData;
 
 class VTKMEDIALAXISFILTERS_EXPORT vtkUnsignedDistanceSurfaceExtractor : public vtkPolyDataAlgorithm
 {
@@ -69,6 +77,13 @@ public:
   /// Epsilon^2, at least 100 and at most a quarter of the samples).
   vtkSetClampMacro(TargetNumberOfVertices, vtkIdType, 0, VTK_ID_MAX);
   vtkGetMacro(TargetNumberOfVertices, vtkIdType);
+  ///@}
+
+  ///@{
+  /// Grid points along the longest side when the input is not image data
+  /// and is resampled. Default 128.
+  vtkSetClampMacro(ResampleDimension, int, 4, 4096);
+  vtkGetMacro(ResampleDimension, int);
   ///@}
 
   ///@{
@@ -105,10 +120,12 @@ protected:
   ~vtkUnsignedDistanceSurfaceExtractor() override = default;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  vtkSmartPointer<vtkImageData> ResampleToImage(vtkDataSet* input, vtkDataArray* udf);
 
   double Epsilon = 0.0;
   vtkIdType NumberOfSamples = 0;
   vtkIdType TargetNumberOfVertices = 0;
+  int ResampleDimension = 128;
   bool SnapToZeroSet = false;
   int RandomSeed = 0;
   int NumberOfThreads = 0;

@@ -125,6 +125,29 @@ class UnsignedDistanceTest(unittest.TestCase):
         self.assertEqual(doubled, probed)
         self.assertEqual(udf_shapes.double_layer_triangles(disk, 0.03)[0], 0)
 
+    def test_other_data_sets_are_resampled(self):
+        # The disk's field as a structured grid and as an unstructured grid:
+        # resampled onto the same cubic cells, the same surface as from the
+        # image, within a spacing of the truth.
+        truth = udf_shapes.disk()
+        source = unsigned_distance(truth, 96)
+        spacing = source.GetOutput().GetSpacing()[0]
+        structured = vtk.vtkImageDataToPointSet()
+        structured.SetInputConnection(source.GetOutputPort())
+        unstructured = vtk.vtkAppendFilter()
+        unstructured.SetInputConnection(source.GetOutputPort())
+        for grid in (structured, unstructured):
+            extractor = medialaxis.vtkUnsignedDistanceSurfaceExtractor()
+            extractor.SetInputConnection(grid.GetOutputPort())
+            extractor.SetResampleDimension(96)
+            extractor.Update()
+            surface = extractor.GetOutput()
+            self.assertGreater(surface.GetNumberOfPolys(), 1000)
+            self.assertEqual(udf_shapes.edge_counts(surface), (1, 0))
+            hausdorff, chamfer = udf_shapes.compare(surface, truth)
+            self.assertLessEqual(hausdorff, spacing)
+            self.assertLessEqual(chamfer, 0.25 * spacing)
+
     def test_same_result_every_run(self):
         first = self.extract("disk")[1].GetOutput()
         second = self.extract("disk")[1].GetOutput()

@@ -1113,14 +1113,10 @@ int main(int argc, char** argv)
            << ", \"mean_two_sided_percent\": " << matDistances.MeanPercent << "}";
     }
     json << "\n}\n";
-    std::ofstream file(o.Report);
-    file << json.str();
-    if (!file)
+    if (!WriteReport(o.Report, json.str()))
     {
-      std::cerr << "medial-axis: cannot write the report " << o.Report << "\n";
       return ComputationFailed;
     }
-    std::cout << "  wrote " << o.Report << "\n";
   }
   return Ok;
 }

@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 namespace medialaxis
@@ -107,6 +108,19 @@ bool MakeOutputFolder(const std::string& folder)
     std::cerr << "medial-axis: cannot create the output folder " << folder << "\n";
     return false;
   }
+  return true;
+}
+
+bool WriteReport(const std::string& path, const std::string& json)
+{
+  std::ofstream file(path);
+  file << json;
+  if (!file)
+  {
+    std::cerr << "medial-axis: cannot write the report " << path << "\n";
+    return false;
+  }
+  std::cout << "  wrote " << path << "\n";
   return true;
 }
 }

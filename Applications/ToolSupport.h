@@ -75,6 +75,10 @@ std::string JsonString(const std::string& s);
 /// false when it cannot.
 bool MakeOutputFolder(const std::string& folder);
 
+/// Writes the JSON report and says so; prints why and returns false when
+/// it cannot.
+bool WriteReport(const std::string& path, const std::string& json);
+
 /// The process's peak resident memory, in MB.
 double PeakMegabytes();
 }

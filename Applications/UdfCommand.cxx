@@ -194,14 +194,10 @@ int RunUdf(const UdfOptions& o)
          << "},\n  \"mean_snap_distance\": " << FieldValue(surface, "MeanSnapDistance")
          << ",\n  \"seconds\": {\"extraction\": " << seconds << ", \"wall\": " << wall
          << "},\n  \"peak_memory_mb\": " << PeakMegabytes() << "\n}\n";
-    std::ofstream file(o.Report);
-    file << json.str();
-    if (!file)
+    if (!WriteReport(o.Report, json.str()))
     {
-      std::cerr << "medial-axis: cannot write the report " << o.Report << "\n";
       return ComputationFailed;
     }
-    std::cout << "  wrote " << o.Report << "\n";
   }
   return 0;
 }

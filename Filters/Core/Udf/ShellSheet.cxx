@@ -36,10 +36,9 @@ EdgeUses GroupEdges(const std::vector<Triangle>& triangles)
   return uses;
 }
 
-double TriangleArea(const TriangleMesh& mesh, const Triangle& t)
+double TriangleArea(const std::vector<Point3>& points, const Triangle& t)
 {
-  return 0.5 *
-    Norm(Cross(mesh.Points[t[1]] - mesh.Points[t[0]], mesh.Points[t[2]] - mesh.Points[t[0]]));
+  return 0.5 * Norm(Cross(points[t[1]] - points[t[0]], points[t[2]] - points[t[0]]));
 }
 
 // Moves p, a point of the sheet with unit normal n, onto the field's zero
@@ -89,9 +88,6 @@ ShellSheet ExtractShellSheet(
   }
 
   // Pieces: triangles joined across edges of exactly two triangles.
-  TriangleMesh all;
-  all.Points = medial.Centers;
-  all.Triangles = kept;
   const EdgeUses uses = GroupEdges(kept);
   DisjointSets pieces(kept.size());
   std::vector<char> onJunction(kept.size(), 0);
@@ -115,7 +111,7 @@ ShellSheet ExtractShellSheet(
   for (std::size_t t = 0; t < kept.size(); ++t)
   {
     const Index root = pieces.Find(static_cast<Index>(t));
-    pieceArea[root] += TriangleArea(all, kept[t]);
+    pieceArea[root] += TriangleArea(medial.Centers, kept[t]);
     pieceOnJunction[root] = pieceOnJunction[root] || onJunction[t];
   }
   const double finArea = options.MinimumFinArea * options.Epsilon * options.Epsilon;

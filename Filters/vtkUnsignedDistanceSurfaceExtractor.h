@@ -19,7 +19,10 @@
  *    Epsilon (the shell's medial axis also branches towards its own ridges,
  *    where the spheres shrink) and drops the small folds hanging on
  *    junctions (pieces below 4 Epsilon^2 joined to the rest only through
- *    edges of three or more triangles);
+ *    edges of three or more triangles) and the flaps folded back across
+ *    such edges (where the shell is sampled coarsely), and closes the holes narrower than
+ *    2 Epsilon (the shell closes over any hole that narrow, so it is not in
+ *    the field; dropped folds along a sharp fold of the surface leave them);
  * 4. optionally projects the points onto the UDF's zero set (SnapToZeroSet).
  *
  * Input: a vtkImageData (or any vtkDataSet, resampled with
@@ -32,10 +35,18 @@
  * point data `ShellRadius` (the sphere's radius, about Epsilon: a
  * diagnostic) and `MedialVertexId`; field data `Epsilon`, `ShellArea`,
  * `Samples`, `Spheres`, `BoundaryLoops`, `JunctionEdges`,
- * `DroppedShrunkTriangles`, `DroppedFinTriangles`, `MeanSnapDistance`.
+ * `DroppedShrunkTriangles`, `DroppedFinTriangles`, `DroppedFlapTriangles`, `FilledHoles`,
+ * `MeanSnapDistance`.
  * Output 1: the epsilon-shell.
  *
- * Errors: no UDF array, negative values (a signed distance: contour it at
+ * The distance may also be a function instead of an input (a closed form,
+ * a neural field): SetDistanceFunction in C++, SetDistanceMethod (or the
+ * Python helper medialaxis.set_distance_function, for f(points) ->
+ * distances on numpy arrays) in Python. It is sampled on a grid over
+ * FunctionBounds and, when SnapToZeroSet is on, read exactly for the
+ * snapping (its gradient by central differences of Epsilon / 8).
+ *
+ * Errors: no UDF array and no function, negative values (a signed distance: contour it at
  * 0 instead), an Epsilon below the grid spacing (the shell would not be
  * resolved), a shell that reaches the grid's border.
  */
@@ -46,7 +57,11 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h"
 
+#include <functional> // for the distance function
+#include <memory>     // for the function's state
+
 class vtkDataArray;
+class vtkDoubleArray;
 class vtkDataSet;
 class vtkImageData;
 
@@ -80,8 +95,50 @@ public:
   ///@}
 
   ///@{
+  /// The distance as a function instead of an input (C++). It is called
+  /// with `count` points (x, y, z one after the other) and fills
+  /// `distances` with their unsigned distances (never negative; a NaN stops
+  /// the filter with an error); on batches of at most 65,536 points, from
+  /// the thread that runs the filter, one call at a time. It is sampled on a
+  /// grid over FunctionBounds, ResampleDimension points along its longest
+  /// side and 6 more cells on every side, and read exactly for the
+  /// snapping. It takes the place of the input (none may be connected). An
+  /// empty function removes it.
+#ifndef __VTK_WRAP__
+  using DistanceCallback =
+    std::function<void(vtkIdType count, const double* points, double* distances)>;
+  void SetDistanceFunction(DistanceCallback function);
+#endif
+  ///@}
+
+  ///@{
+  /// The distance as a function, for Python: `f(arg)` is called (from
+  /// Python: the callable, with no arguments) when distances are needed; it
+  /// reads GetQueryPoints() (3 components per point) and fills
+  /// GetQueryDistances() with one value per point. The Python helper
+  /// medialaxis.set_distance_function(extractor, f, bounds) wraps a function
+  /// of a numpy array of points. Otherwise as SetDistanceFunction.
+  void SetDistanceMethod(void (*f)(void*), void* arg);
+  void SetDistanceMethodArgDelete(void (*f)(void*));
+  vtkDoubleArray* GetQueryPoints();
+  vtkDoubleArray* GetQueryDistances();
+  ///@}
+
+  /// Removes the distance function: the input is read again.
+  void RemoveDistanceFunction();
+  /// Whether a distance function (C++ or Python) is set.
+  bool HasDistanceFunction() const;
+
+  ///@{
+  /// The box that holds the surface of the distance function: xmin, xmax,
+  /// ymin, ymax, zmin, zmax. Unused when the distance is an input.
+  vtkSetVector6Macro(FunctionBounds, double);
+  vtkGetVector6Macro(FunctionBounds, double);
+  ///@}
+
+  ///@{
   /// Grid points along the longest side when the input is not image data
-  /// and is resampled. Default 128.
+  /// and is resampled, and when the distance is a function. Default 128.
   vtkSetClampMacro(ResampleDimension, int, 4, 4096);
   vtkGetMacro(ResampleDimension, int);
   ///@}
@@ -117,10 +174,12 @@ public:
 
 protected:
   vtkUnsignedDistanceSurfaceExtractor();
-  ~vtkUnsignedDistanceSurfaceExtractor() override = default;
+  ~vtkUnsignedDistanceSurfaceExtractor() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   vtkSmartPointer<vtkImageData> ResampleToImage(vtkDataSet* input, vtkDataArray* udf);
+  bool ReadInputField(
+    vtkInformationVector** inputVector, vtkSmartPointer<vtkImageData>& image, vtkDataArray*& udf);
 
   double Epsilon = 0.0;
   vtkIdType NumberOfSamples = 0;
@@ -129,11 +188,14 @@ protected:
   bool SnapToZeroSet = false;
   int RandomSeed = 0;
   int NumberOfThreads = 0;
+  double FunctionBounds[6] = { 0, -1, 0, -1, 0, -1 };
   double UsedEpsilon = 0.0;
   vtkIdType UsedSamples = 0;
   vtkIdType UsedSpheres = 0;
 
 private:
+  struct FunctionState;
+  std::unique_ptr<FunctionState> Function;
   vtkUnsignedDistanceSurfaceExtractor(const vtkUnsignedDistanceSurfaceExtractor&) = delete;
   void operator=(const vtkUnsignedDistanceSurfaceExtractor&) = delete;
 };

@@ -269,6 +269,8 @@ class CommandLineTest(unittest.TestCase):
                 data = json.load(f)
             self.assertAlmostEqual(data["epsilon"], 2 * spacing, delta=1e-9)
             self.assertEqual(data["counts"]["boundary_loops"], 1)
+            # No flap left folded on a junction edge along the coarse rim.
+            self.assertEqual(data["counts"]["junction_edges"], 0)
             self.assertTrue(os.path.getsize(self.path("out/surface.vtp")) > 0)
             counts.append(data["counts"]["triangles"])
         self.assertEqual(counts[0], counts[1])

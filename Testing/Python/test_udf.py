@@ -156,6 +156,51 @@ class UnsignedDistanceTest(unittest.TestCase):
         self.assertEqual(a.GetNumberOfTuples(), b.GetNumberOfTuples())
         self.assertTrue(all(a.GetTuple3(i) == b.GetTuple3(i) for i in range(a.GetNumberOfTuples())))
 
+    def test_distance_as_a_python_function(self):
+        # The half-planes' closed-form distance as a Python function: the
+        # same targets as from a sampled field. Snapping moves every point
+        # but the junction's onto the exact zero set: closer to the truth.
+        truth = udf_shapes.half_planes()
+        distance, bounds = udf_shapes.EXACT_DISTANCES["half_planes"]
+        errors = {}
+        for snap in (False, True):
+            extractor = medialaxis.vtkUnsignedDistanceSurfaceExtractor()
+            medialaxis.set_distance_function(extractor, distance, bounds)
+            self.assertTrue(extractor.HasDistanceFunction())
+            extractor.SetSnapToZeroSet(snap)
+            extractor.Update()
+            surface = extractor.GetOutput()
+            spacing = extractor.GetUsedEpsilon() / 2
+            self.assertGreater(surface.GetNumberOfPolys(), 1000)
+            errors[snap] = udf_shapes.compare(surface, truth)
+            self.assertLessEqual(errors[snap][0], spacing)
+            self.assertLessEqual(errors[snap][1], 0.25 * spacing)
+            self.assertEqual(udf_shapes.edge_counts(surface)[0], 1)
+            self.assertLessEqual(udf_shapes.junction_offset(surface, truth), spacing)
+        self.assertLess(errors[True][0], 0.75 * errors[False][0])
+        self.assertLess(errors[True][1], errors[False][1])
+
+    def test_bad_distance_functions(self):
+        extractor = medialaxis.vtkUnsignedDistanceSurfaceExtractor()
+        extractor.SetResampleDimension(32)
+        medialaxis.set_distance_function(
+            extractor, lambda p: udf_shapes.disk_distance(p)[:-1], (-1, 1, -1, 1, 0, 0))
+        self.assertIn("filled 0 values of QueryDistances", errors_of(extractor))
+
+        def fails(points):
+            raise RuntimeError("no network loaded")
+        medialaxis.set_distance_function(extractor, fails, (-1, 1, -1, 1, 0, 0))
+        self.assertIn("the distance function failed", errors_of(extractor))
+
+        medialaxis.set_distance_function(extractor, udf_shapes.disk_distance, (-1, 1, -1, 1, 0, 0))
+        extractor.SetInputData(vtk.vtkImageData())
+        self.assertIn("both an input and a distance function", errors_of(extractor))
+        extractor.RemoveAllInputs()
+        extractor.Update()
+        self.assertGreater(extractor.GetOutput().GetNumberOfPolys(), 100)
+        medialaxis.set_distance_function(extractor, None, ())
+        self.assertFalse(extractor.HasDistanceFunction())
+
     def test_bad_input(self):
         image = vtk.vtkImageData()
         image.SetDimensions(16, 16, 16)

@@ -112,6 +112,54 @@ SHAPES = {"disk": disk, "hemisphere": hemisphere, "moebius": moebius,
           "half_planes": half_planes, "garment": garment}
 
 
+def disk_distance(p):
+    """Exact distance from the points p (n x 3) to the unit disk in z = 0."""
+    outside = np.maximum(np.hypot(p[:, 0], p[:, 1]) - 1.0, 0.0)
+    return np.hypot(outside, p[:, 2])
+
+
+def hemisphere_distance(p):
+    """Exact distance to the unit upper hemisphere: radial above z = 0,
+    to its rim below."""
+    rim = np.hypot(np.hypot(p[:, 0], p[:, 1]) - 1.0, p[:, 2])
+    return np.where(p[:, 2] >= 0, np.abs(np.linalg.norm(p, axis=1) - 1.0), rim)
+
+
+def half_planes_distance(p):
+    """Exact distance to the three unit squares of half_planes()."""
+    best = np.full(len(p), np.inf)
+    for fin in range(3):
+        angle = 2 * math.pi * fin / 3
+        along = p[:, 0] * math.cos(angle) + p[:, 1] * math.sin(angle)
+        across = -p[:, 0] * math.sin(angle) + p[:, 1] * math.cos(angle)
+        beyond = along - np.clip(along, 0.0, 1.0)
+        above = p[:, 2] - np.clip(p[:, 2], -1.0, 1.0)
+        best = np.minimum(best, np.sqrt(beyond ** 2 + across ** 2 + above ** 2))
+    return best
+
+
+# Closed-form distances and the boxes that hold their surfaces.
+EXACT_DISTANCES = {
+    "disk": (disk_distance, (-1, 1, -1, 1, 0, 0)),
+    "hemisphere": (hemisphere_distance, (-1, 1, -1, 1, 0, 1)),
+    "half_planes": (half_planes_distance,
+                    (-0.5, 1, -math.sin(2 * math.pi / 3), math.sin(2 * math.pi / 3), -1, 1)),
+}
+
+
+def mesh_distance(surface):
+    """The exact distance to a triangle surface as a function of an (n, 3)
+    array of points: the magnitude of vtkImplicitPolyDataDistance."""
+    implicit = vtk.vtkImplicitPolyDataDistance()
+    implicit.SetInput(surface)
+
+    def distance(points):
+        values = vtk.vtkDoubleArray()
+        implicit.EvaluateFunction(numpy_to_vtk(np.ascontiguousarray(points), deep=1), values)
+        return np.abs(vtk_to_numpy(values))
+    return distance
+
+
 def triangles_of(surface):
     return vtk_to_numpy(surface.GetPolys().GetData()).reshape(-1, 4)[:, 1:]
 

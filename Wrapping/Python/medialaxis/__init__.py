@@ -22,3 +22,39 @@ import vtkmodules.vtkIOCore  # noqa: F401
 from .vtkMedialAxisFilters import *  # noqa: F401,F403
 
 __version__ = "0.1.0"
+
+
+def set_distance_function(extractor, function, bounds):
+    """Gives a vtkUnsignedDistanceSurfaceExtractor its distance as a Python
+    function instead of an input.
+
+    function(points) receives an (n, 3) numpy array of points and returns n
+    unsigned distances (any sequence of numbers); it is called on batches of
+    at most 65,536 points. bounds: (xmin, xmax, ymin, ymax, zmin, zmax), the
+    box that holds the surface. An exception in the function stops the
+    extractor with an error. set_distance_function(extractor, None, bounds)
+    removes the function.
+    """
+    import weakref
+
+    import numpy
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    if function is None:
+        extractor.RemoveDistanceFunction()
+        return
+    owner = weakref.ref(extractor)
+
+    def evaluate():
+        current = owner()
+        points = vtk_to_numpy(current.GetQueryPoints()).reshape(-1, 3)
+        distances = numpy.asarray(function(points), dtype=float).reshape(-1)
+        if len(distances) != len(points):
+            raise ValueError("the distance function returned %d values for %d points"
+                             % (len(distances), len(points)))
+        out = current.GetQueryDistances()
+        out.SetNumberOfTuples(len(distances))
+        vtk_to_numpy(out)[:] = distances
+
+    extractor.SetDistanceMethod(evaluate)
+    extractor.SetFunctionBounds(*bounds)

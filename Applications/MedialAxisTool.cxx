@@ -148,6 +148,11 @@ Options:
                         too, or not: closer (CAD median Hausdorff 0.57% ->
                         0.36%); the fillets are found from the radii the
                         collapses placed either way (default: fitted)
+  --no-repair           refuse a surface whose shells cross or that passes
+                        through itself, instead of resolving the crossings
+                        into the closed outer boundary of the solid (the
+                        default; the report and a line say what was removed;
+                        correspondence.vtp then has InputTriangleId)
   --seed S              sampler seed; same seed, same result (default 0)
   --threads T           threads for the parallel stages (0 = all, default)
   --envelope            also write envelope.vtp: the union of the medial
@@ -233,7 +238,7 @@ struct Options
   bool Cad = false, AutomaticPreset = false, Envelope = false, Correspondence = false,
        Error = false, Quiet = false, Fillets = false, Structure = false, MidSurface = false,
        SpikeCollapses = false, ClampRadii = false, AbsorbSpikes = false, QMat = false,
-       FinalFit = true, FitBoundaryRadii = true;
+       FinalFit = true, FitBoundaryRadii = true, Repair = true;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
   double FeatureAngle = 45.0;
@@ -424,6 +429,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
     else if (arg == "--fringe-collapses")
     {
       o.FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeOn;
+    }
+    else if (arg == "--no-repair")
+    {
+      o.Repair = false;
     }
     else if (arg == "--no-fringe-collapses")
     {
@@ -671,6 +680,7 @@ int main(int argc, char** argv)
   }
   vtkNew<vtkMedialSurfaceValidator> validator;
   validator->SetInputConnection(reader->GetOutputPort());
+  validator->SetRepairSelfIntersections(o.Repair);
   LastError validationError;
   Observe(validator, validationError, nullptr);
   validator->Update();
@@ -682,6 +692,12 @@ int main(int argc, char** argv)
   }
 
   vtkPolyData* surface = validator->GetOutput();
+  if (validator->GetRepaired() && !o.Quiet)
+  {
+    std::cout << "  repaired: " << validator->GetNumberOfCrossingPairs()
+              << " pairs of crossing triangles resolved into the outer boundary, area "
+              << validator->GetRemovedArea() << " inside removed\n";
+  }
   medialaxis::SharpEdgeContent sharpEdges;
   if (o.AutomaticPreset)
   {
@@ -727,7 +743,11 @@ int main(int argc, char** argv)
   }
   structural->SetNumberOfThreads(o.Threads);
   structural->SetGenerateEnvelope(o.Envelope);
-  structural->SetInputConnection(validator->GetOutputPort());
+  // A repaired surface is repaired again inside (the same result), so that
+  // the correspondence names the input's triangles (InputTriangleId).
+  structural->SetRepairSelfIntersections(o.Repair);
+  structural->SetInputConnection(
+    validator->GetRepaired() ? reader->GetOutputPort() : validator->GetOutputPort());
   ProgressBar bar{ "medial axis" };
   LastError computeError;
   Observe(structural, computeError, showProgress ? &bar : nullptr);
@@ -974,6 +994,9 @@ int main(int argc, char** argv)
          << ", \"triangles\": " << surface->GetNumberOfPolys()
          << ", \"area\": " << FieldValue(surface, "Area")
          << ", \"volume\": " << FieldValue(surface, "Volume") << "}"
+         << ",\n  \"repair\": {\"repaired\": " << (validator->GetRepaired() ? "true" : "false")
+         << ", \"crossing_pairs\": " << validator->GetNumberOfCrossingPairs()
+         << ", \"removed_area\": " << validator->GetRemovedArea() << "}"
          << ",\n  \"preset\": " << (o.Cad ? "\"cad\"" : "\"organic\"")
          << ", \"preset_chosen\": " << (o.AutomaticPreset ? "\"auto\"" : "\"given\"");
     if (o.AutomaticPreset)

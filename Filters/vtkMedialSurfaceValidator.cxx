@@ -37,6 +37,7 @@ int vtkMedialSurfaceValidator::RequestData(
   medialaxis::SurfacePreparationOptions options;
   options.RelativeMergeTolerance = this->RelativeMergeTolerance;
   options.FixOrientation = this->FixOrientation;
+  options.RepairSelfIntersections = this->RepairSelfIntersections;
   const auto report = medialaxis::PrepareSurfacePolyData(input, output, options);
   this->UpdateProgress(1.0);
 
@@ -58,6 +59,10 @@ int vtkMedialSurfaceValidator::RequestData(
   this->NumberOfComponents = static_cast<vtkIdType>(report.Components);
   this->Area = report.Area;
   this->Volume = report.Volume;
+  this->Repaired = report.Repaired;
+  this->RemovedArea = report.RemovedArea;
+  this->NumberOfCrossingPairs =
+    static_cast<vtkIdType>(report.CrossingShells + report.CrossingFarApart);
 
   if (!report.Ok())
   {
@@ -75,6 +80,9 @@ int vtkMedialSurfaceValidator::RequestData(
     output, "NumberOfReorientedTriangles", this->NumberOfReorientedTriangles);
   medialaxis::AddFieldValue(output, "NumberOfInwardComponents", this->NumberOfInwardComponents);
   medialaxis::AddFieldValue(output, "NumberOfComponents", this->NumberOfComponents);
+  medialaxis::AddFieldValue(output, "NumberOfCrossingPairs", this->NumberOfCrossingPairs);
+  medialaxis::AddFieldValue(output, "Repaired", this->Repaired ? 1 : 0);
+  AddValue(fd, "RemovedArea", this->RemovedArea);
   AddValue(fd, "Area", this->Area);
   AddValue(fd, "Volume", this->Volume);
   if (!this->Notes.empty())
@@ -95,6 +103,8 @@ void vtkMedialSurfaceValidator::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RelativeMergeTolerance: " << this->RelativeMergeTolerance << "\n";
   os << indent << "FixOrientation: " << this->FixOrientation << "\n";
+  os << indent << "RepairSelfIntersections: " << this->RepairSelfIntersections << "\n";
+  os << indent << "Repaired: " << this->Repaired << "\n";
   os << indent << "Valid: " << this->Valid << "\n";
   os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
 }

@@ -17,7 +17,12 @@
  * Refusals (output empty, ErrorMessage set, vtkErrorMacro): no triangles,
  * NaN/Inf coordinates, open boundary edges, edges shared by more than two
  * triangles, vertices where separate sheets touch, non-orientable surfaces
- * and surfaces that enclose no volume. Several shells are allowed.
+ * and surfaces that enclose no volume. Several shells are allowed. Shells
+ * that cross each other and a surface that passes through itself are
+ * refused too, unless RepairSelfIntersections is on: then the crossings are
+ * resolved into the closed outer boundary of the solid they enclose (CGAL's
+ * autorefinement, the parts inside removed), which is prepared and output,
+ * with a note of the pairs resolved and the area removed.
  *
  * The output's field data carries the counts (arrays named like the getters).
  */
@@ -51,6 +56,16 @@ public:
   vtkBooleanMacro(FixOrientation, bool);
   ///@}
 
+  ///@{
+  /// Resolve crossing shells and a surface passing through itself into the
+  /// outer boundary of the solid instead of refusing them. Default off here
+  /// (this filter shows what is wrong); on in vtkStructuralMedialAxis and
+  /// the command line.
+  vtkSetMacro(RepairSelfIntersections, bool);
+  vtkGetMacro(RepairSelfIntersections, bool);
+  vtkBooleanMacro(RepairSelfIntersections, bool);
+  ///@}
+
   /// True when the last update produced a usable surface.
   vtkGetMacro(Valid, bool);
   /// Why the last update refused the surface ("" when valid).
@@ -69,6 +84,12 @@ public:
   vtkGetMacro(NumberOfReorientedTriangles, vtkIdType);
   vtkGetMacro(NumberOfInwardComponents, vtkIdType);
   vtkGetMacro(NumberOfComponents, vtkIdType);
+  /// Pairs of triangles of the input that crossed (far apart on the surface
+  /// or on separate shells).
+  vtkGetMacro(NumberOfCrossingPairs, vtkIdType);
+  /// Whether the crossings were repaired, and the input's area removed.
+  vtkGetMacro(Repaired, bool);
+  vtkGetMacro(RemovedArea, double);
   vtkGetMacro(Area, double);
   vtkGetMacro(Volume, double);
   ///@}
@@ -81,8 +102,12 @@ protected:
 
   double RelativeMergeTolerance = 1e-10;
   bool FixOrientation = true;
+  bool RepairSelfIntersections = false;
 
   bool Valid = false;
+  bool Repaired = false;
+  double RemovedArea = 0.0;
+  vtkIdType NumberOfCrossingPairs = 0;
   std::string ErrorMessage;
   std::string Notes;
   vtkIdType NumberOfMergedPoints = 0;

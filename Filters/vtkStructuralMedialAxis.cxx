@@ -9,11 +9,14 @@
 #include "vtkAtlasMedialAxisSimplifier.h"
 #include "vtkBlueNoiseSurfaceSampler.h"
 #include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
+#include "vtkGenericCell.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMedialReconstructionError.h"
@@ -26,6 +29,7 @@
 #include "vtkRestrictedVoronoiDiagram.h"
 #include "vtkSlabReconstructor.h"
 #include "vtkSmartPointer.h"
+#include "vtkStaticCellLocator.h"
 #include "vtkVoronoiMedialAxis.h"
 
 #include <algorithm>
@@ -463,6 +467,54 @@ int vtkStructuralMedialAxis::RequestData(
   {
     surface->SetPoints(frame.ToLocal(input->GetPoints()));
   }
+  // Crossing shells and a surface passing through itself: resolved first,
+  // each piece remembering the input cell it comes from.
+  vtkNew<vtkIdTypeArray> inputCellOfTriangle;
+  medialaxis::SurfacePreparationReport repair;
+  double repairSeconds = 0.0;
+  if (this->RepairSelfIntersections)
+  {
+    const auto begin = std::chrono::steady_clock::now();
+    medialaxis::SurfacePreparationOptions options;
+    options.RepairSelfIntersections = true;
+    vtkNew<vtkPolyData> prepared;
+    repair = medialaxis::PrepareSurfacePolyData(surface, prepared, options);
+    if (!repair.Ok())
+    {
+      vtkErrorMacro(<< "Surface: " << InInputFrame(repair.Error, surface, input));
+      return 0;
+    }
+    if (repair.Repaired)
+    {
+      vtkNew<vtkStaticCellLocator> locator;
+      locator->SetDataSet(surface);
+      locator->BuildLocator();
+      vtkNew<vtkGenericCell> cell;
+      inputCellOfTriangle->SetNumberOfTuples(prepared->GetNumberOfCells());
+      for (vtkIdType c = 0; c < prepared->GetNumberOfCells(); ++c)
+      {
+        // A piece of an input triangle: its centroid lies on it.
+        double centroid[3] = { 0, 0, 0 }, closest[3], distance2;
+        const vtkIdType* ids;
+        vtkIdType count;
+        prepared->GetCellPoints(c, count, ids);
+        for (vtkIdType k = 0; k < count; ++k)
+        {
+          const double* p = prepared->GetPoint(ids[k]);
+          for (int a = 0; a < 3; ++a)
+          {
+            centroid[a] += p[a] / static_cast<double>(count);
+          }
+        }
+        vtkIdType found = -1;
+        int subId;
+        locator->FindClosestPoint(centroid, closest, cell, found, subId, distance2);
+        inputCellOfTriangle->SetValue(c, found);
+      }
+      surface->ShallowCopy(prepared);
+    }
+    repairSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  }
   vtkNew<vtkBlueNoiseSurfaceSampler> sampler;
   sampler->SetInputData(surface);
   sampler->SetNumberOfSamples(this->NumberOfSamples);
@@ -589,6 +641,29 @@ int vtkStructuralMedialAxis::RequestData(
   localMat->ShallowCopy(mat);
   frame.ToWorld(mat);
   frame.ToWorld(correspondence);
+  if (repair.Repaired)
+  {
+    // Each Voronoi cell lies on a triangle of the repaired surface, a piece
+    // of an input cell.
+    vtkDataArray* triangleIds = correspondence->GetCellData()->GetArray("TriangleId");
+    vtkNew<vtkIdTypeArray> inputIds;
+    inputIds->SetName("InputTriangleId");
+    inputIds->SetNumberOfTuples(correspondence->GetNumberOfCells());
+    for (vtkIdType c = 0; c < correspondence->GetNumberOfCells(); ++c)
+    {
+      const vtkIdType t = triangleIds ? static_cast<vtkIdType>(triangleIds->GetTuple1(c)) : -1;
+      inputIds->SetValue(c,
+        t >= 0 && t < inputCellOfTriangle->GetNumberOfTuples() ? inputCellOfTriangle->GetValue(t)
+                                                               : -1);
+    }
+    vtkNew<vtkPolyData> tagged; // the correspondence may share arrays with a stage
+    tagged->ShallowCopy(correspondence);
+    vtkNew<vtkCellData> cellData;
+    cellData->ShallowCopy(correspondence->GetCellData());
+    cellData->AddArray(inputIds);
+    tagged->GetCellData()->ShallowCopy(cellData);
+    correspondence->ShallowCopy(tagged);
+  }
   frame.ToWorld(sitesOut);
   // Per-stage times and counts travel with the medial mesh.
   vtkNew<vtkFieldData> fields;
@@ -609,6 +684,14 @@ int vtkStructuralMedialAxis::RequestData(
   medialaxis::AddFieldValue(mat, "Sites", sampler->GetOutput()->GetNumberOfPoints());
   medialaxis::AddFieldValue(mat, "InitialVertices", initial->GetNumberOfPoints());
   medialaxis::AddFieldValue(mat, "InitialTriangles", initial->GetNumberOfPolys());
+  if (repair.Repaired)
+  {
+    medialaxis::AddFieldValue(
+      mat, "RepairedCrossingPairs", static_cast<long long>(repair.SelfIntersections));
+    medialaxis::AddFieldDouble(
+      mat, "RepairRemovedAreaFraction", repair.RemovedArea / (repair.Area + repair.RemovedArea));
+    medialaxis::AddFieldDouble(mat, "RepairSeconds", repairSeconds);
+  }
   if (this->MaximumError > 0.0)
   {
     if (errorTargetResult.Hausdorff > this->MaximumError)
@@ -673,4 +756,5 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SpikeThreshold: " << this->SpikeThreshold << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "GenerateEnvelope: " << this->GenerateEnvelope << "\n";
+  os << indent << "RepairSelfIntersections: " << this->RepairSelfIntersections << "\n";
 }

@@ -22,6 +22,14 @@
  * vtkSlabReconstructor's overlapping primitive surfaces (field data
  * `EnvelopeSeconds` on port 0).
  *
+ * With RepairSelfIntersections (the default), a surface whose shells cross
+ * or that passes through itself is first resolved into the closed outer
+ * boundary of the solid (see vtkMedialSurfaceValidator); the stages run on
+ * it, port 0's field data says so (`RepairedCrossingPairs`,
+ * `RepairRemovedAreaFraction`, `RepairSeconds`) and port 1 gets
+ * `InputTriangleId`, the input cell each Voronoi cell's triangle is a piece
+ * of.
+ *
  * Progress moves through the stages in proportion to their usual cost; an
  * abort stops the running stage and leaves the outputs empty. Errors of a
  * stage (e.g. an open or non-manifold surface) are reported with the stage's
@@ -277,6 +285,16 @@ public:
   ///@}
 
   ///@{
+  /// Resolve shells that cross each other and a surface that passes
+  /// through itself into the outer boundary of the solid they enclose, and
+  /// compute the medial axis of that, instead of refusing them (default on).
+  /// Open, non-manifold and non-orientable surfaces are refused either way.
+  vtkSetMacro(RepairSelfIntersections, bool);
+  vtkGetMacro(RepairSelfIntersections, bool);
+  vtkBooleanMacro(RepairSelfIntersections, bool);
+  ///@}
+
+  ///@{
   /// Also output the envelope (balls, cones, slabs) on port 3 (default on;
   /// it costs a few percent of the run).
   vtkSetMacro(GenerateEnvelope, bool);
@@ -313,6 +331,7 @@ protected:
   double SpikeThreshold = 0.025;
   int NumberOfThreads = 0;
   bool GenerateEnvelope = true;
+  bool RepairSelfIntersections = true;
 
 private:
   vtkStructuralMedialAxis(const vtkStructuralMedialAxis&) = delete;

@@ -8,7 +8,8 @@
 // triangles. Points are 16-bit grid coordinates (exact, so that closed seed
 // meshes stay closed under mutation), or raw doubles when flag bit 0 is set
 // (NaN, infinities, 1e300 and denormals). Flag bit 1: CAD mode; bit 2: keep
-// the orientation; bit 3: adaptive sampling.
+// the orientation; bit 3: adaptive sampling; bit 4: repair crossing shells
+// and a surface passing through itself.
 #include "Mesh/MedialMesh.h"
 #include "Sampling/BlueNoiseSampler.h"
 #include "Simplification/AtlasSimplifier.h"
@@ -176,6 +177,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   SurfacePreparationOptions options;
   options.FixOrientation = (flags & 4) == 0;
+  options.RepairSelfIntersections = (flags & 16) != 0;
   TriangleMesh surface;
   const SurfacePreparationReport report = PrepareSurface(soup, surface, options);
   if (!report.Ok())

@@ -66,6 +66,10 @@ SEEDS = {
     'nested_cubes_adaptive': encode(append(cube(scale=8), cube((2, 2, 2), 4)), flags=8),
     'cube_tiny_raw_adaptive': encode(cube(scale=1e-30), flags=9),
     'cube_huge_raw_adaptive': encode(cube(scale=1e30), flags=11),
+    # Bit 4: crossing shells resolved into their union (else refused).
+    'overlapping_cubes': encode(append(cube(scale=4), cube((2, 2, 2), 4))),
+    'overlapping_cubes_repair': encode(append(cube(scale=4), cube((2, 2, 2), 4)), flags=16),
+    'overlapping_cubes_repair_cad': encode(append(cube(scale=4), cube((2, 1, 1), 2)), flags=18),
 }
 
 if __name__ == '__main__':

@@ -105,6 +105,36 @@ class CommandLineTest(unittest.TestCase):
         self.assertIn("not closed", result.stderr)
         self.assertNotIn("vtkExecutive", result.stderr)  # no VTK log noise
 
+    def test_self_intersecting_input(self):
+        # Two boxes exported as one surface: resolved into their union by
+        # default (the report says so; the correspondence names the input's
+        # triangles), refused with --no-repair.
+        import repair_shapes
+        path = self.path("boxes.vtp")
+        writer = vtk.vtkXMLPolyDataWriter()
+        writer.SetInputData(repair_shapes.overlapping_boxes())
+        writer.SetFileName(path)
+        self.assertEqual(writer.Write(), 1)
+        report = self.path("boxes.json")
+        result = run("--samples", "3000", "--target", "200", "--correspondence", "--report",
+                     report, path, self.path("out"))
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("18 pairs of crossing triangles resolved", result.stdout)
+        self.assertIn("Euler characteristic 1", result.stdout)
+        with open(report) as f:
+            data = json.load(f)
+        self.assertEqual(data["repair"], {"repaired": True, "crossing_pairs": 18,
+                                          "removed_area": 2.5})
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(self.path("out/correspondence.vtp"))
+        reader.Update()
+        ids = reader.GetOutput().GetCellData().GetArray("InputTriangleId")
+        self.assertIsNotNone(ids)
+        self.assertEqual(ids.GetRange(), (0.0, 23.0))
+        result = run("--no-repair", path, self.path("out"))
+        self.assertEqual(result.returncode, 3)
+        self.assertIn("of separate shells cross", result.stderr)
+
     def test_every_documented_bad_input(self):
         # Each gives exit code 3 and one line naming the problem; none crashes.
         cube_v = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"

@@ -5,6 +5,7 @@
 #include "Mesh/TriangleAdjacency.h"
 #include "Support/DisjointSets.h"
 #include "Surface/SelfIntersection.h"
+#include "Surface/SelfIntersectionRepair.h"
 
 #include <algorithm>
 #include <cmath>
@@ -367,6 +368,74 @@ double SurfaceArea(const TriangleMesh& mesh)
   return 0.5 * twiceArea;
 }
 
+namespace
+{
+// The crossings found by `report` resolved: every shell turned outward on
+// its own, the union's boundary prepared again; `repaired` receives its
+// report, with the input's counts and notes. Returns why the repair failed,
+// or an empty string.
+std::string RepairAndPrepare(const std::vector<Point3>& points, std::vector<Triangle> triangles,
+  const std::vector<std::vector<Index>>& shells, const SurfacePreparationReport& report,
+  TriangleMesh& output, const SurfacePreparationOptions& options,
+  SurfacePreparationReport& repaired)
+{
+  for (const std::vector<Index>& shell : shells)
+  {
+    if (SignedVolumeOf(points, triangles, shell) < 0.0)
+    {
+      for (Index t : shell)
+      {
+        std::swap(triangles[t][1], triangles[t][2]);
+      }
+    }
+  }
+  TriangleMesh oriented{ points, std::move(triangles) };
+  SelfIntersectionRepairResult repair = RepairSelfIntersections(oriented);
+  if (!repair.Error.empty())
+  {
+    return repair.Error;
+  }
+  SurfacePreparationOptions again = options;
+  again.RepairSelfIntersections = false;
+  again.KnownCrossings = nullptr;
+  repaired = PrepareSurface(repair.Surface, output, again);
+  if (!repaired.Ok())
+  {
+    return "the repaired surface is not usable: " + repaired.Error;
+  }
+  // The input's counts and notes, then the repaired surface's facts.
+  for (std::string& note : repaired.Notes)
+  {
+    note = "repaired surface: " + note;
+  }
+  const double inputArea = SurfaceArea(oriented);
+  repaired.Notes.insert(repaired.Notes.begin(),
+    "self-intersections repaired: " +
+      Count(report.SelfIntersections, "pair", "pairs") +
+      " of crossing triangles resolved into the outer boundary of the solid, " +
+      Percent(inputArea > 0.0 ? repair.RemovedArea / inputArea : 0.0) +
+      " of the area (the parts inside) removed");
+  repaired.Notes.insert(repaired.Notes.begin(), report.Notes.begin(), report.Notes.end());
+  repaired.InputPoints = report.InputPoints;
+  repaired.InputTriangles = report.InputTriangles;
+  repaired.NonFinitePoints = report.NonFinitePoints;
+  repaired.MergedPoints = report.MergedPoints;
+  repaired.UnusedPoints = report.UnusedPoints;
+  repaired.DegenerateTriangles = report.DegenerateTriangles;
+  repaired.SplitNeighbours = report.SplitNeighbours;
+  repaired.DuplicateTriangles = report.DuplicateTriangles;
+  repaired.ReorientedTriangles = report.ReorientedTriangles;
+  repaired.SelfIntersections = report.SelfIntersections;
+  repaired.CrossingShells = report.CrossingShells;
+  repaired.CrossingFarApart = report.CrossingFarApart;
+  repaired.PassThroughExtent = report.PassThroughExtent;
+  repaired.Crossings = report.Crossings;
+  repaired.Repaired = true;
+  repaired.RemovedArea = repair.RemovedArea;
+  return {};
+}
+}
+
 SurfacePreparationReport PrepareSurface(
   const TriangleMesh& input, TriangleMesh& output, const SurfacePreparationOptions& options)
 {
@@ -695,6 +764,17 @@ SurfacePreparationReport PrepareSurface(
         Count(report.CrossingShells, "pair of triangles", "pairs of triangles") +
         " of separate shells cross, e.g. near " + Location(*betweenShells) +
         " (overlapping shells must be merged into one surface first)";
+      if (options.RepairSelfIntersections)
+      {
+        SurfacePreparationReport repaired;
+        const std::string failed =
+          RepairAndPrepare(input.Points, triangles, members, report, output, options, repaired);
+        if (failed.empty())
+        {
+          return repaired;
+        }
+        report.Error += "; repairing it failed: " + failed;
+      }
       return report;
     }
     std::vector<std::vector<Index>> vertexTriangles(input.Points.size());
@@ -729,7 +809,32 @@ SurfacePreparationReport PrepareSurface(
         Count(report.CrossingFarApart, "pair of triangles", "pairs of triangles") +
         " far apart on the surface cross, e.g. near " + Location(*farApart) +
         " (the surface passes through itself)";
+      if (options.RepairSelfIntersections)
+      {
+        SurfacePreparationReport repaired;
+        const std::string failed =
+          RepairAndPrepare(input.Points, triangles, members, report, output, options, repaired);
+        if (failed.empty())
+        {
+          return repaired;
+        }
+        report.Error += "; repairing it failed: " + failed;
+      }
       return report;
+    }
+    // A small contact is kept unless it can be resolved. (Local folds are
+    // kept as they are: resolving them misclassifies the patches.)
+    if (options.RepairSelfIntersections && farApart)
+    {
+      SurfacePreparationReport repaired;
+      const std::string failed =
+        RepairAndPrepare(input.Points, triangles, members, report, output, options, repaired);
+      if (failed.empty())
+      {
+        return repaired;
+      }
+      output = TriangleMesh();
+      report.Notes.push_back("the crossings could not be repaired (" + failed + ")");
     }
     const std::size_t folds = crossings.size() - report.CrossingFarApart;
     if (folds)

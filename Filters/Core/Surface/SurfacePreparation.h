@@ -29,6 +29,10 @@ struct SurfacePreparationOptions
   /// contact, e.g. a scanned limb touching the body: kept, with a note).
   /// Shells that cross each other are always refused.
   double MaxPassThroughExtent = 0.01;
+  /// Instead of refusing shells that cross or a surface passing through
+  /// itself, resolve the crossings into the closed outer boundary of the
+  /// solid they enclose (RepairSelfIntersections) and prepare that.
+  bool RepairSelfIntersections = false;
   /// The crossings an earlier run found on the same input with the same
   /// options (its report's Crossings): the costly exact test is skipped.
   const std::vector<TriangleCrossing>* KnownCrossings = nullptr;
@@ -62,6 +66,8 @@ struct SurfacePreparationReport
   double PassThroughExtent = 0.0;      // box of those crossings / diagonal
   bool SelfIntersectionTested = false; // the run got as far as that test
   std::vector<TriangleCrossing> Crossings;
+  bool Repaired = false;    // the crossings were resolved (the counts above are the input's)
+  double RemovedArea = 0.0; // of the input, inside the solid: removed by the repair
   double Area = 0.0;
   double Volume = 0.0; // enclosed volume after orientation fixing
 

@@ -410,8 +410,7 @@ std::string RepairAndPrepare(const std::vector<Point3>& points, std::vector<Tria
   }
   const double inputArea = SurfaceArea(oriented);
   repaired.Notes.insert(repaired.Notes.begin(),
-    "self-intersections repaired: " +
-      Count(report.SelfIntersections, "pair", "pairs") +
+    "self-intersections repaired: " + Count(report.SelfIntersections, "pair", "pairs") +
       " of crossing triangles resolved into the outer boundary of the solid, " +
       Percent(inputArea > 0.0 ? repair.RemovedArea / inputArea : 0.0) +
       " of the area (the parts inside) removed");

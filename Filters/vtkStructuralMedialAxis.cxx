@@ -479,9 +479,11 @@ int vtkStructuralMedialAxis::RequestData(
     options.RepairSelfIntersections = true;
     vtkNew<vtkPolyData> prepared;
     repair = medialaxis::PrepareSurfacePolyData(surface, prepared, options);
-    if (!repair.Ok())
+    // Other defects are left to the stages, which name themselves.
+    if (!repair.Ok() && repair.CrossingShells + repair.CrossingFarApart > 0)
     {
-      vtkErrorMacro(<< "Surface: " << InInputFrame(repair.Error, surface, input));
+      vtkErrorMacro(<< "stage SelfIntersectionRepair failed: "
+                    << InInputFrame(repair.Error, surface, input));
       return 0;
     }
     if (repair.Repaired)

@@ -67,12 +67,13 @@ struct MedialRun
   vtkSmartPointer<test::ErrorCatcher> Errors = vtkSmartPointer<test::ErrorCatcher>::New();
 };
 
-MedialRun MedialAxis(vtkPolyData* surface)
+MedialRun MedialAxis(vtkPolyData* surface, bool repair = true)
 {
   vtkNew<vtkStructuralMedialAxis> filter;
   MedialRun run;
   filter->AddObserver(vtkCommand::ErrorEvent, run.Errors);
   filter->SetInputData(surface);
+  filter->SetRepairSelfIntersections(repair);
   filter->SetNumberOfSamples(Samples);
   filter->SetTargetNumberOfVertices(Target);
   filter->SetGenerateEnvelope(false);
@@ -81,9 +82,9 @@ MedialRun MedialAxis(vtkPolyData* surface)
   return run;
 }
 
-MedialRun MedialAxis(const TriangleMesh& mesh)
+MedialRun MedialAxis(const TriangleMesh& mesh, bool repair = true)
 {
-  return MedialAxis(test::ToPolyData(mesh));
+  return MedialAxis(test::ToPolyData(mesh), repair);
 }
 
 // Every centre and radius of `mat` is the reference's, scaled and offset,
@@ -150,18 +151,18 @@ std::string Validate(vtkPolyData* surface)
   return validator->GetValid() ? "" : validator->GetErrorMessage();
 }
 
-void ExpectRefused(vtkPolyData* surface, const std::string& phrase)
+void ExpectRefused(vtkPolyData* surface, const std::string& phrase, bool repair = true)
 {
-  const MedialRun run = MedialAxis(surface);
+  const MedialRun run = MedialAxis(surface, repair);
   EXPECT_EQ(run.Mat->GetNumberOfPoints(), 0);
   EXPECT_EQ(run.Errors->Count, 1);
   EXPECT_NE(run.Errors->Last.find(phrase), std::string::npos) << run.Errors->Last;
   EXPECT_NE(Validate(surface).find(phrase), std::string::npos) << Validate(surface);
 }
 
-void ExpectRefused(const TriangleMesh& mesh, const std::string& phrase)
+void ExpectRefused(const TriangleMesh& mesh, const std::string& phrase, bool repair = true)
 {
-  ExpectRefused(test::ToPolyData(mesh), phrase);
+  ExpectRefused(test::ToPolyData(mesh), phrase, repair);
 }
 
 vtkSmartPointer<vtkPolyData> Accepted(const TriangleMesh& mesh)
@@ -263,13 +264,44 @@ TEST(BadInputs, DefectsThatCannotBeRepairedAreRefused)
   ExpectRefused(test::Append(left, right),
     "surface is not manifold: 1 vertex joins several separate sheets of triangles");
 
-  // Two overlapping spheres; a sphere whose north pole is pulled through its
-  // south pole.
+  // Two overlapping spheres, unless repaired (see SelfIntersectionsAreRepaired);
+  // a sphere whose north pole is pulled through its south pole, which bounds
+  // no solid, even with the repair.
   ExpectRefused(test::Append(Sphere(), Sphere(Radius, { 0.3, 0, 0 })),
-    "pairs of triangles of separate shells cross");
+    "pairs of triangles of separate shells cross", false);
   mesh = Sphere();
   mesh.Points[pole] = { 0.02, 0.01, -1.5 * Radius };
   ExpectRefused(mesh, "far apart on the surface cross");
+  EXPECT_NE(MedialAxis(mesh).Errors->Last.find("repairing it failed: the crossings do not "
+                                               "resolve into the boundary of one solid"),
+    std::string::npos);
+}
+
+TEST(BadInputs, SelfIntersectionsAreRepaired)
+{
+  // Two overlapping spheres: the medial axis of their union, every ball
+  // inside it (to 1% of the radius, at 26 points of each ball).
+  const MedialRun run = MedialAxis(test::Append(Sphere(), Sphere(Radius, { 0.3, 0, 0 })));
+  ASSERT_EQ(run.Errors->Count, 0) << run.Errors->Last;
+  ASSERT_EQ(run.Mat->GetNumberOfPoints(), Target);
+  vtkDataArray* radii = run.Mat->GetPointData()->GetArray("Radius");
+  for (vtkIdType i = 0; i < run.Mat->GetNumberOfPoints(); ++i)
+  {
+    Point3 c;
+    run.Mat->GetPoint(i, c.data());
+    for (int d = 0; d < 27; ++d)
+    {
+      const Point3 direction{ double(d % 3 - 1), double(d / 3 % 3 - 1), double(d / 9 - 1) };
+      if (d == 13)
+      {
+        continue; // (0, 0, 0)
+      }
+      const Point3 q = c + (radii->GetTuple1(i) / Norm(direction)) * direction;
+      const double outside = std::min(Norm(q), Norm(q - Point3{ 0.3, 0, 0 })) - Radius;
+      EXPECT_LE(outside, 0.01 * Radius) << i;
+    }
+  }
+  EXPECT_GT(run.Mat->GetFieldData()->GetArray("RepairedCrossingPairs")->GetTuple1(0), 0);
 }
 
 TEST(BadInputs, RepairableDefectsAndExtremeCoordinatesGiveTheRightResult)

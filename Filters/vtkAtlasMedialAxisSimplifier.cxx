@@ -25,7 +25,6 @@
 vtkStandardNewMacro(vtkAtlasMedialAxisSimplifier);
 
 vtkAtlasMedialAxisSimplifier::vtkAtlasMedialAxisSimplifier()
-  : TopologyGuardVertexCount(VTK_ID_MAX)
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
@@ -156,7 +155,8 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.Lambda = this->Lambda;
   options.SpikeThreshold = this->SpikeThreshold;
   options.SpikeSharpness = this->SpikeSharpness;
-  options.TopologyGuardVertexCount = this->TopologyGuardVertexCount >= VTK_ID_MAX
+  options.TopologyGuardVertexCount =
+    this->TopologyGuardVertexCount == 0 || this->TopologyGuardVertexCount >= VTK_ID_MAX
     ? std::numeric_limits<std::size_t>::max()
     : static_cast<std::size_t>(this->TopologyGuardVertexCount);
   options.StrictTopologyGuard = this->StrictTopologyGuard;

@@ -94,9 +94,10 @@ public:
 
   ///@{
   /// Below this many vertices every collapse must satisfy the link condition
-  /// (default VTK_ID_MAX: always). The paper uses 200; on the bunny (50K
-  /// sites -> 5,000 vertices) that leaves Euler characteristic 66 instead of
-  /// 1, because earlier collapses close loops into bubbles.
+  /// (default 0: always, at any count). The paper uses 200; on the bunny
+  /// (50K sites -> 5,000 vertices) that leaves Euler characteristic 66
+  /// instead of 1, because earlier collapses close loops into bubbles. 1
+  /// never guards.
   vtkSetClampMacro(TopologyGuardVertexCount, vtkIdType, 0, VTK_ID_MAX);
   vtkGetMacro(TopologyGuardVertexCount, vtkIdType);
   ///@}
@@ -306,7 +307,7 @@ protected:
   double Lambda = 6e-6;
   double SpikeThreshold = 0.025;
   double SpikeSharpness = 100.0;
-  vtkIdType TopologyGuardVertexCount; // VTK_ID_MAX, set in the constructor
+  vtkIdType TopologyGuardVertexCount = 0; // 0: always
   bool StrictTopologyGuard = false;
   bool PreserveSharpFeatures = true;
   bool InvaginatedTerm = true;

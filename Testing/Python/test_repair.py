@@ -5,24 +5,12 @@ vtkStructuralMedialAxis, off in the bare validator); other bad surfaces stay
 refused."""
 import unittest
 
-import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 import medialaxis
+from error_events import errors_of
 import repair_shapes
-
-
-def errors_of(algorithm):
-    messages = []
-
-    def record(caller, event, data=None):
-        messages.append(str(data))
-    record.CallDataType = vtk.VTK_STRING
-    algorithm.AddObserver(vtk.vtkCommand.ErrorEvent, record)
-    algorithm.GetExecutive().AddObserver(vtk.vtkCommand.ErrorEvent, record)
-    algorithm.Update()
-    return " ".join(messages)
 
 
 def validate(surface, repair):

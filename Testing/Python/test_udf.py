@@ -9,20 +9,8 @@ import vtk
 from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 import medialaxis
+from error_events import errors_of
 import udf_shapes
-
-
-def errors_of(algorithm):
-    """Runs the algorithm; returns the text of its error events."""
-    messages = []
-
-    def record(caller, event, data=None):
-        messages.append(str(data))
-    record.CallDataType = vtk.VTK_STRING
-    algorithm.AddObserver(vtk.vtkCommand.ErrorEvent, record)
-    algorithm.GetExecutive().AddObserver(vtk.vtkCommand.ErrorEvent, record)
-    algorithm.Update()
-    return " ".join(messages)
 
 
 def unsigned_distance(surface, dimensions=128):

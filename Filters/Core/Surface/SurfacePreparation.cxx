@@ -748,6 +748,22 @@ SurfacePreparationReport PrepareSurface(
   report.SelfIntersections = crossings.size();
   if (!crossings.empty())
   {
+    // The refusal in report.Error stands unless the crossings are resolved.
+    auto refuseUnlessRepaired = [&]() -> SurfacePreparationReport
+    {
+      if (options.RepairSelfIntersections)
+      {
+        SurfacePreparationReport repaired;
+        const std::string failed =
+          RepairAndPrepare(input.Points, triangles, members, report, output, options, repaired);
+        if (failed.empty())
+        {
+          return repaired;
+        }
+        report.Error += "; repairing it failed: " + failed;
+      }
+      return report;
+    };
     const TriangleCrossing* betweenShells = nullptr;
     for (const TriangleCrossing& c : crossings)
     {
@@ -763,18 +779,7 @@ SurfacePreparationReport PrepareSurface(
         Count(report.CrossingShells, "pair of triangles", "pairs of triangles") +
         " of separate shells cross, e.g. near " + Location(*betweenShells) +
         " (overlapping shells must be merged into one surface first)";
-      if (options.RepairSelfIntersections)
-      {
-        SurfacePreparationReport repaired;
-        const std::string failed =
-          RepairAndPrepare(input.Points, triangles, members, report, output, options, repaired);
-        if (failed.empty())
-        {
-          return repaired;
-        }
-        report.Error += "; repairing it failed: " + failed;
-      }
-      return report;
+      return refuseUnlessRepaired();
     }
     std::vector<std::vector<Index>> vertexTriangles(input.Points.size());
     for (std::size_t t = 0; t < nt; ++t)
@@ -808,18 +813,7 @@ SurfacePreparationReport PrepareSurface(
         Count(report.CrossingFarApart, "pair of triangles", "pairs of triangles") +
         " far apart on the surface cross, e.g. near " + Location(*farApart) +
         " (the surface passes through itself)";
-      if (options.RepairSelfIntersections)
-      {
-        SurfacePreparationReport repaired;
-        const std::string failed =
-          RepairAndPrepare(input.Points, triangles, members, report, output, options, repaired);
-        if (failed.empty())
-        {
-          return repaired;
-        }
-        report.Error += "; repairing it failed: " + failed;
-      }
-      return report;
+      return refuseUnlessRepaired();
     }
     // A small contact is kept unless it can be resolved. (Local folds are
     // kept as they are: resolving them misclassifies the patches.)

@@ -96,8 +96,9 @@ void CentreLinesToPolyData(const medialaxis::FilletDetectionResult& result, vtkP
   }
   output->SetPoints(points);
   output->SetLines(lines);
+  // FilletId (cell data) is the only active scalars, so that ParaView
+  // colours the centre lines by fillet on Apply.
   output->GetPointData()->AddArray(radius);
-  output->GetPointData()->SetActiveScalars("Radius");
   output->GetPointData()->AddArray(vertexIds);
   for (vtkDataArray* array : std::vector<vtkDataArray*>{
          filletIds, meanRadius, minimumRadius, maximumRadius, variation, length, area, arc })

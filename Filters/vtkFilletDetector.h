@@ -48,7 +48,8 @@
  * `MaximumRadius`, `RadiusVariation` ((max - min) / mean: 0 for a
  * constant-radius fillet), `Length`, `SurfaceArea` (of its faces) and
  * `ArcAngle` (degrees of the ball's circle its faces cover: 180 minus the
- * angle between the faces it blends, 90 on a right-angled edge).
+ * angle between the faces it blends, 90 on a right-angled edge). `FilletId`
+ * is the active scalars (ParaView colours the lines by fillet on Apply).
  * Output 1: the surface (as prepared for the pipeline: same triangles as the
  * diagram refers to) with cell data `FilletId` (-1 on no fillet). Both
  * outputs carry field data `NumberOfFillets`, `BoundaryEdges` and

@@ -4,7 +4,8 @@
 # of an organic model (the Stanford Bunny from ../shared/data/meshes) and of
 # a generated CAD-like part with its fillets highlighted (README), and the
 # mid-surfaces of the thin-walled CAD meshes of ../shared/data/meshes
-# (docs/benchmark-results.md).
+# (docs/benchmark-results.md), and the plugin in the ParaView GUI
+# (docs/paraview.md).
 #   scripts/make-pictures.sh
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -27,4 +28,12 @@ for mesh in abc_00000125.obj abc_00000068.obj casting.off cup.off; do
   "$tool" --preset cad --mid-surface --quiet --screenshot "$images/mid-surface-${mesh%.*}.png" \
     "$meshes/$mesh" "$work/${mesh%.*}"
 done
+# The plugin in the real ParaView GUI (docs/paraview.md, README): the whole
+# window, drawn under Xvfb.
+"$root/scripts/setup.sh" >/dev/null # the plugin build and ParaView's Python modules
+MEDIALAXIS_GUI_PICTURE="$images/paraview-gui.png" \
+  PV_PLUGIN_PATH="$build/paraview/lib/paraview-plugins/MedialAxis" \
+  PYTHONPATH="$build/paraview-sdk/lib/python3/dist-packages" \
+  xvfb-run -a -s "-screen 0 1600x1000x24" paraview --dr \
+  --script="$root/Examples/ParaView/gui_picture.py" >/dev/null
 echo "pictures are in $images"

@@ -31,7 +31,8 @@ packages=(cmake ninja-build g++ ccache pkg-config libvtk9-dev python3-vtk9 libcg
 if [ "$with_paraview" = 1 ]; then
   # Never python3-paraview: it conflicts with python3-vtk9 (see make-paraview-sdk.sh).
   # mpiexec and mpi4py: medial-axis-batch runs pvbatch on MPI ranks.
-  packages+=(paraview paraview-dev openmpi-bin python3-mpi4py)
+  # libqt5svg5: the GUI's toolbar icons (its picture, docs/images/paraview-gui.png).
+  packages+=(paraview paraview-dev openmpi-bin python3-mpi4py libqt5svg5)
 fi
 if [ "$with_robustness" = 1 ]; then
   packages+=(clang-14 libclang-rt-14-dev) # libFuzzer and clang's sanitizer runtimes

@@ -34,6 +34,7 @@
 #include "Envelope/ReconstructionError.h"
 #include "HeapTuning.h"
 #include "Mesh/MedialMeshQuality.h"
+#include "Mesh/MedialSheets.h"
 #include "Sampling/BlueNoiseSampler.h"
 #include "Simplification/AtlasSimplifier.h"
 #include "Support/Parallel.h"
@@ -282,6 +283,16 @@ std::vector<Stage> RunPipeline(
     quality.DegenerateTriangles, quality.FoldedTriangles, quality.FoldedEdges,
     ValidateMedialMesh(m).IsValid() ? "valid" : ValidateMedialMesh(m).Message.c_str(),
     quality.MeanMinimumAngle, quality.PercentMinimumAngleBelow30, quality.MeanQuality);
+  {
+    const auto [lo, hi] = BoundingBox(mesh.Points);
+    const MedialCleanliness clean = MeasureCleanliness(m, Norm(hi - lo));
+    std::printf("  simplified MAT cleanliness: %zu sheets, N80 %zu, largest sheet %.1f%% of the "
+                "area, fins %.2f%% of the area, folds %.2f%% of the sheet edges, boundary %.2f "
+                "and junctions %.2f diagonals\n",
+      clean.Sheets, clean.SheetsFor80PercentArea, 100.0 * clean.LargestSheetAreaFraction,
+      100.0 * clean.FinAreaFraction, 100.0 * clean.FoldedEdgeFraction, clean.BoundaryLength,
+      clean.JunctionLength);
+  }
   if (Envelope)
   {
     RunEnvelope(mesh, m, stages);

@@ -121,6 +121,7 @@ def per_mesh(args, tool, mesh_dir, name, category, genus, tmp, size=None):
                counts=data["counts"], euler=data["euler_characteristic"],
                euler_expected=1 - genus, valid=data["valid"],
                quality=data["triangle_quality"], hausdorff=data["hausdorff"],
+               cleanliness=data.get("cleanliness", {}),
                spike_edges_percent=spike_edges_percent(os.path.join(first, "mat.ma")))
     # Same samples and seed, hence the same initial medial mesh.
     qmat_dir = stem + ".qmat"
@@ -129,6 +130,7 @@ def per_mesh(args, tool, mesh_dir, name, category, genus, tmp, size=None):
         row["qmat"] = dict(seconds=qmat["seconds"], counts=qmat["counts"],
                            euler=qmat["euler_characteristic"], valid=qmat["valid"],
                            quality=qmat["triangle_quality"], hausdorff=qmat["hausdorff"],
+                           cleanliness=qmat.get("cleanliness", {}),
                            spike_edges_percent=spike_edges_percent(
                                os.path.join(qmat_dir, "mat.ma")))
     else:
@@ -230,6 +232,26 @@ def markdown(results):
                          qq["degenerate"] + qq["folded"], r["euler"], q["euler"],
                          r["euler_expected"], fmt(r["spike_edges_percent"]),
                          fmt(q["spike_edges_percent"])))
+    lines += ["", "## Cleanliness, Structural MAT (S) against Q-MAT (Q)", "",
+              "Sheets are triangles joined across two-triangle edges; N80 is the fewest sheets"
+              " holding 80% of the area; fins are sheets under 1% of the area on a junction"
+              " edge; folds are two-triangle edges meeting below 90°; lengths in diagonals.", "",
+              "| mesh | samples → spheres | sheets S / Q | N80 S / Q | fin area % S / Q |"
+              " folds % S / Q | boundary S / Q | junctions S / Q |",
+              "|" + "---|" * 8]
+    for r in results["meshes"]:
+        if "failed" in r or "qmat" not in r or "failed" in r["qmat"]:
+            continue
+        cs, cq = r.get("cleanliness", {}), r["qmat"].get("cleanliness", {})
+        if not cs or not cq:
+            continue
+        lines.append("| %s | %d → %d | %d / %d | %d / %d | %.1f / %.1f | %.1f / %.1f |"
+                     " %.1f / %.1f | %.1f / %.1f |" % (
+                         r["mesh"], r["samples"], r["target"], cs["sheets"], cq["sheets"],
+                         cs["n80"], cq["n80"], cs["fin_area_percent"], cq["fin_area_percent"],
+                         cs["folds_percent"], cq["folds_percent"],
+                         cs["boundary_length_diagonals"], cq["boundary_length_diagonals"],
+                         cs["junction_length_diagonals"], cq["junction_length_diagonals"]))
     lines += ["", "## Summary", ""]
     for key, text in results["summary"].items():
         lines.append("- %s: %s" % (key, text))

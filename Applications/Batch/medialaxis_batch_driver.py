@@ -165,8 +165,8 @@ def complete_record(plan, job):
 COLUMNS = ["mesh", "status", "preset", "crease_ratio", "triangles", "wall_seconds",
            "sampling_seconds", "rvd_seconds", "voronoi_seconds", "simplification_seconds",
            "error_seconds", "peak_memory_mb", "spheres", "edges", "slabs", "euler_characteristic",
-           "valid", "hausdorff_percent", "mean_distance_percent", "rank", "resumed", "reason",
-           "input"]
+           "valid", "hausdorff_percent", "mean_distance_percent", "sheets", "n80",
+           "fin_area_percent", "folds_percent", "rank", "resumed", "reason", "input"]
 
 
 def summary_row(plan, record, resumed):
@@ -176,6 +176,7 @@ def summary_row(plan, record, resumed):
     counts = report.get("counts", {})
     hausdorff = report.get("hausdorff", {})
     sharp = report.get("sharp_edges", {})
+    clean = report.get("cleanliness", {})
     return {"mesh": record["mesh"], "status": record["status"],
             "preset": report.get("preset", ""), "crease_ratio": sharp.get("crease_ratio", ""),
             "triangles": report.get("surface", {}).get("triangles", ""),
@@ -192,6 +193,9 @@ def summary_row(plan, record, resumed):
             "valid": report.get("valid", ""),
             "hausdorff_percent": hausdorff.get("two_sided_percent", ""),
             "mean_distance_percent": hausdorff.get("mean_two_sided_percent", ""),
+            "sheets": clean.get("sheets", ""), "n80": clean.get("n80", ""),
+            "fin_area_percent": clean.get("fin_area_percent", ""),
+            "folds_percent": clean.get("folds_percent", ""),
             "rank": record["rank"], "resumed": resumed, "reason": record["reason"],
             "input": record["input"]}
 

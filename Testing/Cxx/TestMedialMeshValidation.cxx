@@ -2,6 +2,7 @@
 // The shared medial-mesh validity check, on plain meshes and on poly data.
 #include "Mesh/MedialMesh.h"
 #include "Mesh/MedialMeshQuality.h"
+#include "Mesh/MedialSheets.h"
 #include "vtkMedialMeshConversion.h"
 
 #include "vtkCellArray.h"
@@ -164,4 +165,129 @@ TEST(MedialMeshQuality, AnglesQualityDegenerateAndFolds)
   EXPECT_EQ(q.DegenerateTriangles, 1u);
   EXPECT_EQ(q.FoldedEdges, 0u);
   EXPECT_EQ(q.Triangles, 3u);
+}
+
+namespace
+{
+// A flat n x n grid of unit squares in z = 0, two triangles each; vertex
+// (i, j) has id i + (n + 1) j.
+MedialMesh FlatGrid(int n)
+{
+  MedialMesh m;
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      m.Centers.push_back({ double(i), double(j), 0.0 });
+      m.Radii.push_back(1.0);
+    }
+  }
+  const auto id = [n](int i, int j) { return static_cast<Index>(i + (n + 1) * j); };
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      m.Faces.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1) });
+      m.Faces.push_back({ id(i, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  }
+  return m;
+}
+
+// A fin standing on the grid edges (i, j) .. (i + length, j): a strip of
+// two triangles per edge up to a row of vertices at height `height`.
+void AddFin(MedialMesh& m, int n, int i, int j, int length, double height)
+{
+  const Index top = static_cast<Index>(m.Centers.size());
+  for (int k = 0; k <= length; ++k)
+  {
+    m.Centers.push_back({ double(i + k), double(j), height });
+    m.Radii.push_back(0.5);
+  }
+  for (int k = 0; k < length; ++k)
+  {
+    const Index a = static_cast<Index>(i + k + (n + 1) * j), b = a + 1;
+    m.Faces.push_back({ a, b, top + k + 1 });
+    m.Faces.push_back({ a, top + k + 1, top + k });
+  }
+}
+}
+
+TEST(MedialSheets, FlatSheetIsOneCleanSheet)
+{
+  const MedialCleanliness c = MeasureCleanliness(FlatGrid(10), 2.0);
+  EXPECT_EQ(c.Sheets, 1u);
+  EXPECT_EQ(c.SheetsFor80PercentArea, 1u);
+  EXPECT_DOUBLE_EQ(c.LargestSheetAreaFraction, 1.0);
+  EXPECT_EQ(c.FinAreaFraction, 0.0);
+  EXPECT_EQ(c.FoldedEdgeFraction, 0.0);
+  EXPECT_EQ(c.JunctionEdges, 0u);
+  EXPECT_NEAR(c.BoundaryLength, 40.0 / 2.0, 1e-12); // the perimeter, in diagonals
+  EXPECT_EQ(c.JunctionLength, 0.0);
+}
+
+TEST(MedialSheets, OneFinOnAFlatSheet)
+{
+  // A fin on one inner edge: the sheet goes on around the edge.
+  MedialMesh m = FlatGrid(10);
+  AddFin(m, 10, 4, 5, 1, 0.5);
+  MedialCleanliness c = MeasureCleanliness(m);
+  EXPECT_EQ(c.Sheets, 2u);
+  EXPECT_EQ(c.SheetsFor80PercentArea, 1u);
+  EXPECT_EQ(c.JunctionEdges, 1u);
+  EXPECT_NEAR(c.JunctionLength, 1.0, 1e-12);
+  const double fin = 0.5; // 1 x 0.5
+  EXPECT_NEAR(c.FinAreaFraction, fin / (100.0 + fin), 1e-12);
+  EXPECT_NEAR(c.LargestSheetAreaFraction, 100.0 / (100.0 + fin), 1e-12);
+  EXPECT_EQ(c.FoldedEdgeFraction, 0.0);
+  // The fin's two sides and its top join the boundary.
+  EXPECT_NEAR(c.BoundaryLength, 40.0 + 2.0, 1e-12);
+
+  // A fin across the whole sheet cuts it in two: three sheets, the two
+  // halves holding 80% together, and a fin too large (9% of the area) to
+  // count as one.
+  m = FlatGrid(10);
+  AddFin(m, 10, 0, 4, 10, 1.0);
+  c = MeasureCleanliness(m);
+  EXPECT_EQ(c.Sheets, 3u);
+  EXPECT_EQ(c.SheetsFor80PercentArea, 2u);
+  EXPECT_EQ(c.JunctionEdges, 10u);
+  EXPECT_NEAR(c.LargestSheetAreaFraction, 60.0 / 110.0, 1e-12);
+  EXPECT_EQ(c.FinAreaFraction, 0.0);
+}
+
+TEST(MedialSheets, PleatsAreSharpHinges)
+{
+  MedialMesh m;
+  m.Centers = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 0.5, 0.3, 0.5 } };
+  m.Radii = { 1, 1, 1, 1 };
+  m.Faces = { { 0, 1, 2 }, { 1, 0, 3 } };
+  // The half-planes meet at atan2(0.5, 0.3) = 59 degrees: a pleat.
+  MedialCleanliness c = MeasureCleanliness(m);
+  EXPECT_EQ(c.Sheets, 1u);
+  EXPECT_DOUBLE_EQ(c.FoldedEdgeFraction, 1.0);
+  // At 121 degrees (y = -0.3): a bend, not a pleat; flat: none either.
+  for (double y : { -0.3, -1.0 })
+  {
+    m.Centers[3] = { 0.5, y, y == -1.0 ? 0.0 : 0.5 };
+    c = MeasureCleanliness(m);
+    EXPECT_EQ(c.FoldedEdgeFraction, 0.0) << y;
+  }
+  // A grid crumpled like an egg box (every other vertex one unit up): the
+  // 16 diagonals among its 40 inner edges pleat; half a unit only bends it.
+  m = FlatGrid(4);
+  for (std::size_t v = 0; v < m.Centers.size(); ++v)
+  {
+    m.Centers[v][2] = (v % 5 + v / 5) % 2 == 1 ? 1.0 : 0.0;
+  }
+  c = MeasureCleanliness(m);
+  EXPECT_EQ(c.Sheets, 1u);
+  EXPECT_DOUBLE_EQ(c.FoldedEdgeFraction, 16.0 / 40.0);
+  for (auto& p : m.Centers)
+  {
+    p[2] *= 0.5;
+  }
+  EXPECT_EQ(MeasureCleanliness(m).FoldedEdgeFraction, 0.0);
+  const SheetDecomposition sheets = DecomposeIntoSheets(m);
+  EXPECT_EQ(sheets.NumberOfSheets, 1u);
 }

@@ -4,6 +4,7 @@
 #include "HeapTuning.h"
 #include "Mesh/MedialMesh.h"
 #include "Mesh/MedialMeshQuality.h"
+#include "Mesh/MedialSheets.h"
 #include "Screenshot.h"
 #include "Structure/MedialStructure.h"
 #include "Surface/SharpEdgeContent.h"
@@ -120,6 +121,18 @@ Options:
                         kept: on for most organic shapes, off for tubes and
                         blobs, whose medial axis is a curve or a point; off
                         with --sharp)
+  --hair-angle DEG      cleaner or closer: Voronoi faces whose two surface
+                        samples subtend less than DEG at their spheres stand
+                        for the sampling, not the thickness, and are eroded
+                        before simplification, keeping the topology
+                        (default 30; larger: fewer, larger sheets; 0: off)
+  --pleat-angle DEG     no collapse may add pairs of triangles meeting below
+                        DEG (default 90; 10 only refuses folded triangles)
+  --fin-budget F        fins (small sheets that branch off a larger one over
+                        a small bump of the surface) whose spheres reach out
+                        of their junction by at most F of the diagonal, as a
+                        fraction or a percentage, are collapsed into the
+                        sheet they hang on (default 0.5%; 0 keeps them)
   --error-bands, --no-error-bands
                         take the collapses in the paper's cost order within
                         bands of local error (closer to the surface for the
@@ -241,6 +254,9 @@ struct Options
        FinalFit = true, FitBoundaryRadii = true, Repair = true;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
+  double HairAngle = 30.0;
+  double FinBudget = 0.005;
+  double PleatAngle = 90.0;
   double FeatureAngle = 45.0;
   int FeatureNormalFiltering = 3;
   double SpikeRepair = 10.0;
@@ -322,11 +338,11 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
       }
       (arg == "--samples" ? o.Samples : o.Target) = static_cast<vtkIdType>(number);
     }
-    else if (arg == "--max-error")
+    else if (arg == "--max-error" || arg == "--fin-budget")
     {
       if (i + 1 >= argc)
       {
-        return "--max-error needs a value, e.g. 0.5% or 0.005";
+        return arg + " needs a value, e.g. 0.5% or 0.005";
       }
       std::string text = argv[++i];
       const bool percent = !text.empty() && text.back() == '%';
@@ -336,9 +352,18 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
       }
       if (!ParseNumber(text.c_str(), number))
       {
-        return "--max-error needs a number or a percentage, got '" + std::string(argv[i]) + "'";
+        return arg + " needs a number or a percentage, got '" + std::string(argv[i]) + "'";
       }
       number = percent ? number / 100.0 : number;
+      if (arg == "--fin-budget")
+      {
+        if (!(number >= 0.0 && number <= 0.1))
+        {
+          return "--fin-budget must be from 0 to 10% of the diagonal";
+        }
+        o.FinBudget = number;
+        continue;
+      }
       if (!(number > 0.0 && number <= 1.0))
       {
         return "--max-error must be above 0 and at most 100% of the diagonal";
@@ -356,6 +381,20 @@ std::string Parse(int argc, char** argv, Options& o, bool& help)
         return "--feature-angle must be between 0 and 180 degrees";
       }
       o.FeatureAngle = number;
+    }
+    else if (arg == "--hair-angle" || arg == "--pleat-angle")
+    {
+      if (!(problem = value(number)).empty())
+      {
+        return problem;
+      }
+      const bool hair = arg == "--hair-angle";
+      if (!(number >= (hair ? 0.0 : 10.0) && number <= 90.0))
+      {
+        return hair ? "--hair-angle must be between 0 and 90 degrees"
+                    : "--pleat-angle must be between 10 and 90 degrees";
+      }
+      (hair ? o.HairAngle : o.PleatAngle) = number;
     }
     else if (arg == "--spike-repair")
     {
@@ -728,6 +767,9 @@ int main(int argc, char** argv)
   structural->SetFeatureNormalFiltering(o.FeatureNormalFiltering);
   structural->SetFringeCollapses(o.FringeCollapses);
   structural->SetErrorBands(o.ErrorBands);
+  structural->SetHairAngle(o.HairAngle);
+  structural->SetFinBudget(o.FinBudget);
+  structural->SetPleatAngle(o.PleatAngle);
   structural->SetEulerNeutralSpikeCollapses(o.SpikeCollapses);
   structural->SetClampRadiiToAtlas(o.ClampRadii);
   structural->SetAbsorbSpikes(o.AbsorbSpikes);
@@ -917,6 +959,8 @@ int main(int argc, char** argv)
   medialaxis::MedialMesh mesh;
   medialaxis::PolyDataToMedialMesh(mat, mesh);
   const medialaxis::MedialMeshQuality quality = medialaxis::MeasureQuality(mesh);
+  const medialaxis::MedialCleanliness clean =
+    medialaxis::MeasureCleanliness(mesh, surface->GetLength());
   const long long euler = medialaxis::EulerCharacteristic(mesh);
   const medialaxis::MedialMeshCheck check = medialaxis::ValidateMedialMesh(mesh);
   std::cout << "medial axis of " << o.Input << ": " << mesh.Centers.size() << " spheres, "
@@ -926,7 +970,12 @@ int main(int argc, char** argv)
   {
     std::cout << ", two-sided Hausdorff " << hausdorffPercent << "% of the diagonal";
   }
-  std::cout << "\n";
+  std::cout << "\n  sheets: " << clean.Sheets << ", N80 " << clean.SheetsFor80PercentArea
+            << ", largest " << 100.0 * clean.LargestSheetAreaFraction << "% of the area, fins "
+            << 100.0 * clean.FinAreaFraction << "% of the area, folds "
+            << 100.0 * clean.FoldedEdgeFraction << "% of the sheet edges, boundary "
+            << clean.BoundaryLength << " and junctions " << clean.JunctionLength
+            << " diagonals long\n";
   if (o.AutomaticPreset)
   {
     std::cout << "  preset: " << (o.Cad ? "cad" : "organic") << " (sharp-edge creases "
@@ -1023,7 +1072,8 @@ int main(int argc, char** argv)
          << (o.ErrorBands == vtkAtlasMedialAxisSimplifier::BandsAutomatic ? "\"automatic\""
                 : o.ErrorBands == vtkAtlasMedialAxisSimplifier::BandsOn   ? "\"on\""
                                                                           : "\"off\"")
-         << ", \"euler_neutral_spike_collapses\": "
+         << ", \"hair_angle\": " << o.HairAngle << ", \"fin_budget\": " << o.FinBudget
+         << ", \"pleat_angle\": " << o.PleatAngle << ", \"euler_neutral_spike_collapses\": "
          << (structural->GetEulerNeutralSpikeCollapses() ? "true" : "false")
          << ", \"absorb_spikes\": " << (structural->GetAbsorbSpikes() ? "true" : "false")
          << ", \"clamp_radii_to_atlas\": "
@@ -1055,7 +1105,10 @@ int main(int argc, char** argv)
          << ", \"triangles\": " << mesh.Faces.size()
          << ", \"boundary_edges\": " << quality.BoundaryEdges
          << ", \"nonmanifold_edges\": " << quality.NonManifoldEdges
-         << ", \"collapses\": " << FieldValue(mat, "Collapses") << ", \"fringe_collapses_used\": "
+         << ", \"collapses\": " << FieldValue(mat, "Collapses")
+         << ", \"fin_collapses\": " << FieldValue(mat, "FinCollapses")
+         << ", \"eroded_triangles\": " << FieldValue(mat, "ErodedTriangles")
+         << ", \"fringe_collapses_used\": "
          << (FieldValue(mat, "FringeCollapsesUsed") == 1.0 ? "true" : "false")
          << ", \"error_bands_used\": "
          << (FieldValue(mat, "ErrorBandsUsed") == 1.0 ? "true" : "false")
@@ -1069,7 +1122,14 @@ int main(int argc, char** argv)
          << ", \"folded\": " << quality.FoldedTriangles
          << ", \"mean_min_angle_deg\": " << quality.MeanMinimumAngle
          << ", \"percent_min_angle_below_30\": " << quality.PercentMinimumAngleBelow30
-         << ", \"mean_q\": " << quality.MeanQuality << "}";
+         << ", \"mean_q\": " << quality.MeanQuality << "},\n  \"cleanliness\": {"
+         << "\"sheets\": " << clean.Sheets << ", \"n80\": " << clean.SheetsFor80PercentArea
+         << ", \"largest_sheet_area_percent\": " << 100.0 * clean.LargestSheetAreaFraction
+         << ", \"fin_area_percent\": " << 100.0 * clean.FinAreaFraction
+         << ", \"folds_percent\": " << 100.0 * clean.FoldedEdgeFraction
+         << ", \"junction_edges\": " << clean.JunctionEdges
+         << ", \"boundary_length_diagonals\": " << clean.BoundaryLength
+         << ", \"junction_length_diagonals\": " << clean.JunctionLength << "}";
     if (o.Fillets)
     {
       vtkCellData* cells = filletLines->GetCellData();

@@ -168,6 +168,9 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
   options.ErrorBands = this->ErrorBands == BandsOn ? medialaxis::ErrorBandMode::On
     : this->ErrorBands == BandsOff                 ? medialaxis::ErrorBandMode::Off
                                                    : medialaxis::ErrorBandMode::Automatic;
+  options.HairAngle = this->HairAngle;
+  options.FinBudget = this->FinBudget;
+  options.PleatAngle = this->PleatAngle;
   options.PreventFolds = this->PreventFolds;
   options.FringeCollapses = this->FringeCollapses == FringeOn ? medialaxis::FringeCollapseMode::On
     : this->FringeCollapses == FringeOff                      ? medialaxis::FringeCollapseMode::Off
@@ -217,6 +220,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
     { std::pair<const char*, std::size_t>{ "Collapses", result.Collapses },
       { "RejectedCollapses", result.RejectedCollapses },
       { "RelaxedCollapses", result.RelaxedCollapses }, { "MergedFaces", result.MergedFaces },
+      { "FinCollapses", result.FinCollapses }, { "ErodedTriangles", result.ErodedTriangles },
       { "EulerNeutralCollapses", result.EulerNeutralCollapses },
       { "SnappedVertices", result.SnappedVertices }, { "ForcedSnaps", result.ForcedSnaps },
       { "FoldingAllowedCollapses", result.FoldingAllowedCollapses },
@@ -256,6 +260,9 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AbsorbSpikes: " << this->AbsorbSpikes << "\n";
   os << indent << "ErrorBound: " << this->ErrorBound << "\n";
   os << indent << "ErrorBands: " << this->ErrorBands << "\n";
+  os << indent << "HairAngle: " << this->HairAngle << "\n";
+  os << indent << "FinBudget: " << this->FinBudget << "\n";
+  os << indent << "PleatAngle: " << this->PleatAngle << "\n";
   os << indent << "PreventFolds: " << this->PreventFolds << "\n";
   os << indent << "FringeCollapses: " << this->FringeCollapses << "\n";
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";

@@ -167,6 +167,41 @@ public:
   ///@}
 
   ///@{
+  /// Cleaner or closer (docs/methods.md, "Clean sheets"). HairAngle: before
+  /// the collapses, Voronoi faces whose two surface samples subtend less
+  /// than this angle (degrees) at their spheres' centres are eroded from
+  /// their free edges inwards, keeping the topology: they stand for the
+  /// sampling of a curved or bumpy surface, not for the solid's thickness,
+  /// and become the fins that cut the sheets into pieces. Larger: fewer,
+  /// larger sheets; smaller: closer to small bumps; 0: off. Default 30.
+  /// Field data ErodedTriangles counts the triangles eroded.
+  vtkSetClampMacro(HairAngle, double, 0.0, 90.0);
+  vtkGetMacro(HairAngle, double);
+  ///@}
+
+  ///@{
+  /// FinBudget: fins left after the erosion (small sheets that branch off a
+  /// larger one) whose spheres reach out of the cones of their junction by
+  /// at most this fraction of the surface's bounding-box diagonal are
+  /// collapsed into the junction (whose spheres stay) at a few checkpoints
+  /// on the way to the target. 0 keeps every fin. Default 0.005 (0.5%).
+  /// Field data FinCollapses counts the collapses.
+  vtkSetClampMacro(FinBudget, double, 0.0, 0.1);
+  vtkGetMacro(FinBudget, double);
+  ///@}
+
+  ///@{
+  /// PleatAngle: with PreventFolds, a collapse may not leave more pairs of
+  /// triangles meeting below this dihedral angle (degrees) around the merged
+  /// sphere than there were (pleats), besides never folding two triangles
+  /// onto each other; where no collapse is left, only the latter holds.
+  /// Organic shapes only (PreserveSharpFeatures off), from 200 target
+  /// spheres up. Default 90; 10 guards against folds only.
+  vtkSetClampMacro(PleatAngle, double, 10.0, 90.0);
+  vtkGetMacro(PleatAngle, double);
+  ///@}
+
+  ///@{
   /// Error-bounded collapses: when above 0, a collapse whose local error
   /// exceeds this fraction of the surface's bounding-box diagonal waits, and
   /// the simplification stops short of TargetNumberOfVertices when none
@@ -314,6 +349,9 @@ protected:
   bool ClampRadiiToAtlas = false;
   double ErrorBound = 0.0;
   int ErrorBands = BandsAutomatic;
+  double HairAngle = 30.0;
+  double FinBudget = 0.005;
+  double PleatAngle = 90.0;
   bool AbsorbSpikes = false;
   bool PreventFolds = true;
   int FringeCollapses = FringeAutomatic;

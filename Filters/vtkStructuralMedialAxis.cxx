@@ -541,6 +541,9 @@ int vtkStructuralMedialAxis::RequestData(
   simplifier->SetPreserveSharpFeatures(this->PreserveSharpFeatures);
   simplifier->SetFringeCollapses(this->FringeCollapses);
   simplifier->SetErrorBands(this->ErrorBands);
+  simplifier->SetHairAngle(this->HairAngle);
+  simplifier->SetFinBudget(this->FinBudget);
+  simplifier->SetPleatAngle(this->PleatAngle);
   simplifier->SetEulerNeutralSpikeCollapses(this->EulerNeutralSpikeCollapses);
   simplifier->SetClampRadiiToAtlas(this->ClampRadiiToAtlas);
   simplifier->SetAbsorbSpikes(this->AbsorbSpikes);
@@ -746,6 +749,9 @@ void vtkStructuralMedialAxis::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EulerNeutralSpikeCollapses: " << this->EulerNeutralSpikeCollapses << "\n";
   os << indent << "ClampRadiiToAtlas: " << this->ClampRadiiToAtlas << "\n";
   os << indent << "ErrorBands: " << this->ErrorBands << "\n";
+  os << indent << "HairAngle: " << this->HairAngle << "\n";
+  os << indent << "FinBudget: " << this->FinBudget << "\n";
+  os << indent << "PleatAngle: " << this->PleatAngle << "\n";
   os << indent << "AbsorbSpikes: " << this->AbsorbSpikes << "\n";
   os << indent << "FinalFit: " << this->FinalFit << "\n";
   os << indent << "FitSpikeRepair: " << this->FitSpikeRepair << "\n";

@@ -191,6 +191,25 @@ public:
   ///@}
 
   ///@{
+  /// Cleaner or closer (see vtkAtlasMedialAxisSimplifier::HairAngle and
+  /// FinBudget): Voronoi faces whose two samples subtend less than
+  /// HairAngle degrees at their spheres are eroded before the collapses
+  /// (default 30; 0: off), and fins whose spheres reach out of their
+  /// junction by at most FinBudget of the diagonal are collapsed into the
+  /// sheet they hang on (default 0.005; 0: off). Larger values: fewer,
+  /// larger sheets. Structural strategy only; field data ErodedTriangles
+  /// and FinCollapses.
+  vtkSetClampMacro(HairAngle, double, 0.0, 90.0);
+  vtkGetMacro(HairAngle, double);
+  vtkSetClampMacro(FinBudget, double, 0.0, 0.1);
+  vtkGetMacro(FinBudget, double);
+  /// The pleat guard (see vtkAtlasMedialAxisSimplifier::PleatAngle):
+  /// default 90 degrees; 10 guards against folds only.
+  vtkSetClampMacro(PleatAngle, double, 10.0, 90.0);
+  vtkGetMacro(PleatAngle, double);
+  ///@}
+
+  ///@{
   /// Spike edges (stability ratio below SpikeThreshold) collapse into the
   /// larger ball, unchanged, ahead of everything else (see
   /// vtkAtlasMedialAxisSimplifier): far fewer spike edges (16
@@ -317,6 +336,9 @@ protected:
   bool PreserveSharpFeatures = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
+  double HairAngle = 30.0;
+  double FinBudget = 0.005;
+  double PleatAngle = 90.0;
   bool EulerNeutralSpikeCollapses = false;
   bool ClampRadiiToAtlas = false;
   bool AbsorbSpikes = false;

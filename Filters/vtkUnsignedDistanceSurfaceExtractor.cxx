@@ -450,6 +450,12 @@ int vtkUnsignedDistanceSurfaceExtractor::RequestData(
   medial->SetInputData(shellOutput);
   medial->SetPresetToOrganic();
   medial->SetAdaptiveSampling(false); // the shell is equally thin everywhere
+  // The shell's medial axis is the surface sought, its junctions and rims
+  // included: none of it is hair, fin or pleat to clean away (with the
+  // clean-sheet measures three half-planes lose their junction's loop).
+  medial->SetHairAngle(0.0);
+  medial->SetFinBudget(0.0);
+  medial->SetPleatAngle(10.0);
   medial->SetNumberOfSamples(this->UsedSamples);
   medial->SetTargetNumberOfVertices(this->UsedSpheres);
   medial->SetRandomSeed(this->RandomSeed);

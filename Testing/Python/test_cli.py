@@ -64,6 +64,12 @@ class CommandLineTest(unittest.TestCase):
             result = run("--max-error", bad, "a", "b")
             self.assertEqual(result.returncode, 2, bad)
             self.assertIn("--max-error", result.stderr)
+        for option, bad in (("--hair-angle", "-1"), ("--hair-angle", "91"),
+                            ("--pleat-angle", "5"), ("--fin-budget", "11%"),
+                            ("--fin-budget", "wide")):
+            result = run(option, bad, "a", "b")
+            self.assertEqual(result.returncode, 2, (option, bad))
+            self.assertIn(option, result.stderr)
 
     def run_on_sphere(self, *options, target):
         """Runs the tool on a tessellated sphere with `options`; checks that it
@@ -224,6 +230,15 @@ class CommandLineTest(unittest.TestCase):
         self.assertEqual(data["counts"]["sites"], 3000)
         self.assertEqual(data["counts"]["vertices"], 50)
         self.assertEqual(data["triangle_quality"]["degenerate"], 0)
+        clean = data["cleanliness"]
+        for key in ("sheets", "n80", "largest_sheet_area_percent", "fin_area_percent",
+                    "folds_percent", "junction_edges", "boundary_length_diagonals",
+                    "junction_length_diagonals"):
+            self.assertIn(key, clean)
+        self.assertLessEqual(clean["n80"], clean["sheets"])
+        self.assertEqual(data["parameters"]["hair_angle"], 30)
+        self.assertEqual(data["parameters"]["pleat_angle"], 90)
+        self.assertIn("sheets:", result.stdout)
         self.assertGreater(data["seconds"]["Total"], 0.0)
         self.assertGreater(data["peak_memory_mb"], 10.0)
         # A sphere's medial axis is its centre: the envelope of 50 spheres

@@ -43,6 +43,8 @@ struct MedialMeshQuality
 /// A fold is a dihedral angle (between the two triangles' planes, on their
 /// side) below this many degrees.
 constexpr double FoldAngleDegrees = 10.0;
+/// cos(FoldAngleDegrees).
+constexpr double FoldCosine = 0.98480775301220802032;
 
 MedialMeshQuality MeasureQuality(const MedialMesh& mesh);
 
@@ -68,12 +70,13 @@ std::vector<TriangleHinge> TriangleHinges(const MedialMesh& mesh,
 
 /// Whether the triangles (u, v, x) and (v, u, y), which share the edge
 /// (u, v), fold onto each other (see MedialMeshQuality::FoldedEdges).
-inline bool IsFold(const Point3& u, const Point3& v, const Point3& x, const Point3& y)
+/// With `cosFold` = cos(A), a fold is a dihedral angle below A instead.
+inline bool IsFold(
+  const Point3& u, const Point3& v, const Point3& x, const Point3& y, double cosFold = FoldCosine)
 {
   const Point3 e = v - u;
   const Point3 n1 = Cross(e, x - u);
   const Point3 n2 = Cross(y - v, e); // = (u - v) x (y - v)
-  static const double cosFold = std::cos(FoldAngleDegrees * 3.14159265358979323846 / 180.0);
   return Dot(n1, n2) < -cosFold * Norm(n1) * Norm(n2);
 }
 }

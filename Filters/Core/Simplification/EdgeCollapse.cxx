@@ -22,6 +22,7 @@ MedialEdgeCollapse::MedialEdgeCollapse(const MedialMesh& input, const Normalisat
   , Queue(EndpointsUnchanged{ &this->Version })
 {
   this->FoldGuard = options.PreventFolds;
+  this->GuardCosine = std::cos(options.FoldAngle * 3.14159265358979323846 / 180.0);
   const std::size_t nv = input.Centers.size();
   this->Spheres.resize(nv);
   for (std::size_t v = 0; v < nv; ++v)
@@ -211,7 +212,7 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
     }
     this->PushAllEdges(true);
   }
-  if (!this->CollapseWithinBounds(target + reserve, progress))
+  if (!this->CollapseWithoutFins(target + reserve, progress))
   {
     this->Counts.Aborted = true;
     return this->Counts;
@@ -219,6 +220,19 @@ EdgeCollapseCounts MedialEdgeCollapse::Run()
   if (reserve > 0)
   {
     this->CollapseFolds(target);
+    if (!this->CollapseWithinBounds(target, progress))
+    {
+      this->Counts.Aborted = true;
+      return this->Counts;
+    }
+  }
+  // Stalled because every remaining collapse would pleat: the pleat guard
+  // gives way to the fold guard (no two triangles folded onto each other),
+  // also when the policy stops at stalls.
+  if (this->NumberAlive > target && this->FoldGuard && this->GuardCosine < FoldCosine)
+  {
+    this->GuardCosine = FoldCosine;
+    this->PushAllEdges();
     if (!this->CollapseWithinBounds(target, progress))
     {
       this->Counts.Aborted = true;
@@ -273,6 +287,32 @@ bool MedialEdgeCollapse::CollapseWithinBounds(
     }
     this->PushAllEdges();
   }
+}
+
+bool MedialEdgeCollapse::CollapseWithoutFins(
+  std::size_t target, const std::function<bool(std::size_t)>& progress)
+{
+  const double budget = this->Options.FinBudget;
+  if (!(budget > 0.0))
+  {
+    return this->CollapseWithinBounds(target, progress);
+  }
+  // Fins fold into their junctions at a few checkpoints on the way, so that
+  // the collapses after them spend the spheres they free elsewhere; the
+  // last one a little short of the target, which is then reached exactly.
+  for (double factor : { 4.0, 2.0, 1.4, 1.1 })
+  {
+    const auto checkpoint = static_cast<std::size_t>(factor * static_cast<double>(target));
+    if (this->NumberAlive > checkpoint)
+    {
+      if (!this->CollapseWithinBounds(checkpoint, progress))
+      {
+        return false;
+      }
+      this->CollapseFins(budget, this->Options.FinAreaShare);
+    }
+  }
+  return this->CollapseWithinBounds(target, progress);
 }
 
 MedialMesh MedialEdgeCollapse::Output(std::vector<Index>& outputToInput) const

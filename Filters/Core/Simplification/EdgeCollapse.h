@@ -7,6 +7,7 @@
 
 #include "Geometry/Vec3.h"
 #include "Mesh/MedialMesh.h"
+#include "Mesh/MedialMeshQuality.h"
 #include "Mesh/MedialPrimitives.h"
 #include "Simplification/CollapseQueue.h"
 #include "Simplification/EdgeCollapseCounts.h"
@@ -61,6 +62,9 @@ struct EdgeCollapseOptions
   /// Refuse collapses that fold two triangles onto each other (dihedral
   /// angle below 10 degrees); allowed anyway once nothing else is left.
   bool PreventFolds = true;
+  /// The dihedral angle (degrees) below which PreventFolds counts two
+  /// triangles as folded; up to 90 it also refuses pleats (sharp hinges).
+  double FoldAngle = FoldAngleDegrees;
   /// Most collapses taken from the queue at once and made in parallel: the
   /// cheapest candidates whose edges lie at least five edges apart (the
   /// result is the same at any thread count, but not the strictly
@@ -77,6 +81,12 @@ struct EdgeCollapseOptions
   /// short of the target, instead of lifting the fold guard and the link
   /// condition to reach it.
   bool StopWhenStalled = false;
+  /// Fins (see MedialEdgeCollapse::CollapseFins) whose balls reach out of
+  /// the cones of their junction by at most this much (unit frame) are
+  /// collapsed into it at checkpoints on the way to the target (0: never).
+  double FinBudget = 0.0;
+  /// Only sheets smaller than this share of the triangle area can be fins.
+  double FinAreaShare = 0.05;
   /// Fraction in [0, 1]; returning false aborts.
   std::function<bool(double)> Progress;
 };
@@ -193,6 +203,19 @@ public:
   /// Whether moving v to `target` makes no zero-area triangle and no more
   /// folds than it leaves.
   bool MoveKeepsValid(Index v, const Point3& target, CollapseScratch& scratch) const;
+  /// Fins: sheets (triangles joined across two-triangle edges) smaller than
+  /// `areaShare` of the triangle area that branch off other sheets at every
+  /// junction edge they touch (at a junction, the two triangles closest to a
+  /// straight continuation of each other go through it, the others branch
+  /// off), and whose balls reach out of the cones of those junction edges
+  /// by at most `budget`. Each is listed as its junction's vertices (sorted),
+  /// -1, then its other vertices (sorted).
+  std::vector<std::vector<Index>> FindFins(double budget, double areaShare) const;
+  /// Collapses the vertices of every fin into its junction, farthest first,
+  /// keeping the junction's spheres, with the link condition and validity
+  /// checks (but not the policy's bound); repeated while fins are found (at
+  /// most four times). Returns how many collapses were made.
+  std::size_t CollapseFins(double budget, double areaShare);
   void Move(Index v, const Sphere& s) { this->Spheres[v] = s; }
 
 private:
@@ -225,6 +248,9 @@ private:
   // CollapseUntil, raising the policy's bound at every stall short of
   // `target` (CollapsePolicy::RaiseBound) while it lets it.
   bool CollapseWithinBounds(std::size_t target, const std::function<bool(std::size_t)>& progress);
+  // CollapseWithinBounds, with the fins collapsed at a few checkpoints on
+  // the way (EdgeCollapseOptions::FinBudget).
+  bool CollapseWithoutFins(std::size_t target, const std::function<bool(std::size_t)>& progress);
   std::size_t BatchLimit(std::size_t target) const;
   // The vertices within two edges of a or b (with repeats).
   void GatherRegion(Index a, Index b, std::vector<Index>& region) const;
@@ -270,6 +296,12 @@ private:
     Index a, Index b, const Point3& newPosition, CollapseScratch& scratch) const;
   std::vector<std::array<Index, 4>> FindFolds(CollapseScratch& scratch) const;
   void CollapseFolds(std::size_t target);
+  // What a hinge (u, v, x), (v, u, y) adds to the fold counts: a fold (the
+  // triangles folded onto each other) FoldCountWeight, a pleat (below the
+  // pleat guard's angle) 1, so that no collapse may add a fold, nor a pleat
+  // without removing a fold.
+  static constexpr std::size_t FoldCountWeight = 1000;
+  std::size_t FoldWeight(const Point3& u, const Point3& v, const Point3& x, const Point3& y) const;
   std::size_t CountFolds(const std::vector<std::array<Index, 3>>& centre, Index moved,
     const Point3& movedTo, CollapseScratch& scratch) const;
 
@@ -303,6 +335,8 @@ private:
   bool Relaxed = false;            // the link condition no longer guards collapses
   bool FoldGuard = true;           // collapses may not fold triangles onto each other
   bool FoldsAllowedAtLast = false; // the fold guard was lifted after a stall
+  bool IgnorePolicyBound = false;  // fin collapses do not ask the policy's bound
+  double GuardCosine = 1.0;        // cos(Options.FoldAngle), then FoldCosine
 };
 }
 

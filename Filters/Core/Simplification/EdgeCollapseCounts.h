@@ -19,6 +19,9 @@ struct EdgeCollapseCounts
   /// Collapses chosen to remove the folds left by forced moves (see
   /// MedialEdgeCollapse::CollapseFolds).
   std::size_t FoldRepairCollapses = 0;
+  /// Collapses that folded fins into the junctions they hang on
+  /// (EdgeCollapseOptions::FinBudget); counted in Collapses too.
+  std::size_t FinCollapses = 0;
   std::size_t MergedFaces = 0; // each closed a bubble (lowered the Euler characteristic)
   /// Collapses past the link condition that keep the Euler characteristic
   /// (FringeCollapses, EulerNeutralSpikeCollapses) and the face pairs they

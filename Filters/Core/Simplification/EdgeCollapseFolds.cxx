@@ -9,14 +9,30 @@
 
 namespace medialaxis
 {
+std::size_t MedialEdgeCollapse::FoldWeight(
+  const Point3& u, const Point3& v, const Point3& x, const Point3& y) const
+{
+  // IsFold at both angles, from one pair of normals.
+  const Point3 e = v - u;
+  const Point3 n1 = Cross(e, x - u);
+  const Point3 n2 = Cross(y - v, e);
+  const double dot = Dot(n1, n2), scale = Norm(n1) * Norm(n2);
+  if (dot < -FoldCosine * scale)
+  {
+    return FoldCountWeight;
+  }
+  return dot < -this->GuardCosine * scale ? 1 : 0;
+}
+
 namespace
 {
-// Calls fold(u, v, x, y) for every edge (u, v) between exactly two of the
+// Calls fold(u, v, x, y, w) for every edge (u, v) between exactly two of the
 // faces listed in `incidences` as (min, max, apex, flag), sorted, whose faces
-// (u, v, x) and (v, u, y) fold onto each other and have a flag set.
-template <typename Position, typename Fold>
-void ForEachFold(
-  const std::vector<std::array<Index, 4>>& incidences, const Position& position, const Fold& fold)
+// (u, v, x) and (v, u, y) have a flag set and a weight w = weight(u, v, x, y)
+// above 0 (they fold onto each other, or pleat).
+template <typename Position, typename Weight, typename Fold>
+void ForEachFold(const std::vector<std::array<Index, 4>>& incidences, const Position& position,
+  const Weight& weight, const Fold& fold)
 {
   for (std::size_t i = 0; i < incidences.size();)
   {
@@ -27,10 +43,12 @@ void ForEachFold(
       ++j;
     }
     const auto &p = incidences[i], &q = incidences[i + 1];
-    if (j - i == 2 && (p[3] || q[3]) &&
-      IsFold(position(p[0]), position(p[1]), position(p[2]), position(q[2])))
+    const std::size_t w = j - i == 2 && (p[3] || q[3])
+      ? weight(position(p[0]), position(p[1]), position(p[2]), position(q[2]))
+      : 0;
+    if (w > 0)
     {
-      fold(p[0], p[1], p[2], q[2]);
+      fold(p[0], p[1], p[2], q[2], w);
     }
     i = j;
   }
@@ -70,7 +88,11 @@ std::size_t MedialEdgeCollapse::CountFolds(const std::vector<std::array<Index, 3
   }
   std::sort(incidences.begin(), incidences.end());
   std::size_t folds = 0;
-  ForEachFold(incidences, position, [&folds](Index, Index, Index, Index) { ++folds; });
+  ForEachFold(
+    incidences, position,
+    [this](const Point3& u, const Point3& v, const Point3& x, const Point3& y)
+    { return this->FoldWeight(u, v, x, y); },
+    [&folds](Index, Index, Index, Index, std::size_t w) { folds += w; });
   return folds;
 }
 
@@ -90,7 +112,9 @@ std::vector<std::array<Index, 4>> MedialEdgeCollapse::FindFolds(CollapseScratch&
   std::vector<std::array<Index, 4>> folds;
   ForEachFold(
     incidences, [this](Index v) { return this->Position(v); },
-    [&folds](Index u, Index v, Index x, Index y) {
+    [](const Point3& u, const Point3& v, const Point3& x, const Point3& y)
+    { return IsFold(u, v, x, y) ? 1 : 0; },
+    [&folds](Index u, Index v, Index x, Index y, std::size_t) {
       folds.push_back({ u, v, x, y });
     });
   return folds;
@@ -149,10 +173,10 @@ std::size_t MedialEdgeCollapse::FoldsAroundMerged(
           ++faces;
         }
       }
-      if (faces == 2 &&
-        IsFold(newPosition, position(u), position(std::min(x, y)), position(std::max(x, y))))
+      if (faces == 2)
       {
-        ++folds;
+        folds += this->FoldWeight(
+          newPosition, position(u), position(std::min(x, y)), position(std::max(x, y)));
       }
     }
   }
@@ -195,9 +219,9 @@ std::size_t MedialEdgeCollapse::FoldsAroundMerged(
         }
       }
     }
-    if (count == 1 && IsFold(position(u), position(v), newPosition, position(y)))
+    if (count == 1)
     {
-      ++folds;
+      folds += this->FoldWeight(position(u), position(v), newPosition, position(y));
     }
   }
   return folds;

@@ -115,7 +115,8 @@ bool MedialEdgeCollapse::CollapseIsValid(
     return false;
   }
   // A fold repair undoes what forced moves did, whatever the bound.
-  return scratch.FewerFolds || this->Policy.WithinBound(*this, a, b, target, scratch);
+  return scratch.FewerFolds || this->IgnorePolicyBound ||
+    this->Policy.WithinBound(*this, a, b, target, scratch);
 }
 
 void MedialEdgeCollapse::ApplyCollapse(

@@ -215,8 +215,6 @@ public:
   /// keeping the junction's spheres, with the link condition and validity
   /// checks (but not the policy's bound); repeated while fins are found (at
   /// most four times). Returns how many collapses were made.
-  /// Then the hairs: lines with a free end whose ball reaches out of the
-  /// other end's by at most `budget`, collapsed into that end.
   std::size_t CollapseFins(double budget, double areaShare);
   void Move(Index v, const Sphere& s) { this->Spheres[v] = s; }
 
@@ -250,9 +248,6 @@ private:
   // CollapseUntil, raising the policy's bound at every stall short of
   // `target` (CollapsePolicy::RaiseBound) while it lets it.
   bool CollapseWithinBounds(std::size_t target, const std::function<bool(std::size_t)>& progress);
-  // Merges `away` into `keep`, whose sphere stays, for CollapseFins: with
-  // the link condition and the validity checks but not the policy's bound.
-  bool CollapseFinVertex(Index keep, Index away);
   // CollapseWithinBounds, with the fins collapsed at a few checkpoints on
   // the way (EdgeCollapseOptions::FinBudget).
   bool CollapseWithoutFins(std::size_t target, const std::function<bool(std::size_t)>& progress);

@@ -228,36 +228,6 @@ std::vector<std::vector<Index>> MedialEdgeCollapse::FindFins(double budget, doub
   return fins;
 }
 
-bool MedialEdgeCollapse::CollapseFinVertex(Index keep, Index away)
-{
-  auto& scratch = this->Scratch;
-  scratch.EulerNeutral = false;
-  scratch.FoldsBeforeA = scratch.FoldsBeforeB = -1;
-  scratch.MergedFaces = scratch.EulerNeutralMerges = 0;
-  const bool guarded =
-    this->NumberAlive <= this->Options.TopologyGuardVertexCount && !this->Relaxed;
-  if (guarded && !this->LinkConditionHolds(keep, away, scratch))
-  {
-    return false;
-  }
-  const Sphere target = this->Spheres[keep];
-  this->IgnorePolicyBound = true;
-  const bool valid = this->CollapseIsValid(keep, away, target, scratch);
-  this->IgnorePolicyBound = false;
-  if (!valid)
-  {
-    return false;
-  }
-  this->ApplyCollapse(keep, away, target, scratch);
-  --this->NumberAlive;
-  ++this->Counts.Collapses;
-  ++this->Counts.FinCollapses;
-  this->Counts.MergedFaces += scratch.MergedFaces;
-  this->Counts.EulerNeutralCollapses += scratch.EulerNeutral ? 1 : 0;
-  this->Counts.EulerNeutralMerges += scratch.EulerNeutralMerges;
-  return true;
-}
-
 std::size_t MedialEdgeCollapse::CollapseFins(double budget, double areaShare)
 {
   std::size_t collapsed = 0;
@@ -332,33 +302,39 @@ std::size_t MedialEdgeCollapse::CollapseFins(double budget, double areaShare)
         }
         for (Index keep : into)
         {
-          if (this->VertexAlive[keep] && this->CollapseFinVertex(keep, v))
+          if (!this->VertexAlive[keep])
           {
-            touched.push_back(keep);
-            ++collapsed;
-            break;
+            continue;
           }
-        }
-      }
-    }
-    // Hairs: a line with a free end whose ball reaches out of the other
-    // end's by at most the budget (a fin shrunk to a line).
-    for (std::size_t v = 0; v < this->Spheres.size(); ++v)
-    {
-      for (Index end = static_cast<Index>(v); this->VertexAlive[end] &&
-           this->VertexFaces[end].empty() && this->VertexNeighbours[end].size() == 1;)
-      {
-        const Index keep = this->VertexNeighbours[end][0];
-        const Sphere &a = this->Spheres[end], &b = this->Spheres[keep];
-        const double reach =
-          std::sqrt(Distance2(this->Position(end), this->Position(keep))) + a[3] - b[3];
-        if (!(reach <= budget) || !this->CollapseFinVertex(keep, end))
-        {
+          auto& scratch = this->Scratch;
+          scratch.EulerNeutral = false;
+          scratch.FoldsBeforeA = scratch.FoldsBeforeB = -1;
+          scratch.MergedFaces = scratch.EulerNeutralMerges = 0;
+          const bool guarded =
+            this->NumberAlive <= this->Options.TopologyGuardVertexCount && !this->Relaxed;
+          if (guarded && !this->LinkConditionHolds(keep, v, scratch))
+          {
+            continue;
+          }
+          const Sphere target = this->Spheres[keep];
+          this->IgnorePolicyBound = true;
+          const bool valid = this->CollapseIsValid(keep, v, target, scratch);
+          this->IgnorePolicyBound = false;
+          if (!valid)
+          {
+            continue;
+          }
+          this->ApplyCollapse(keep, v, target, scratch);
+          --this->NumberAlive;
+          ++this->Counts.Collapses;
+          ++this->Counts.FinCollapses;
+          this->Counts.MergedFaces += scratch.MergedFaces;
+          this->Counts.EulerNeutralCollapses += scratch.EulerNeutral ? 1 : 0;
+          this->Counts.EulerNeutralMerges += scratch.EulerNeutralMerges;
+          touched.push_back(keep);
+          ++collapsed;
           break;
         }
-        touched.push_back(keep);
-        ++collapsed;
-        end = keep;
       }
     }
     if (collapsed == before)

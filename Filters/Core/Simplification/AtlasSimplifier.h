@@ -182,10 +182,10 @@ struct AtlasSimplifierOptions
   /// Clean sheets. Three measures keep the medial sheets few, large and
   /// smooth (docs/methods.md, "Clean sheets"); measured on the 16 organic
   /// shared meshes at 10,000 samples -> 1,000 spheres, from all off to all
-  /// on: N80 (the fewest sheets holding 80% of the area) median 18 -> 8,
+  /// on: N80 (the fewest sheets holding 80% of the area) median 18 -> 7.5,
   /// pleats (two-triangle edges meeting below 90 degrees) median 7.4% ->
-  /// 1.5%, median two-sided Hausdorff distance 0.38% -> 0.40%; fandisk at
-  /// 50,000 -> 5,000: 178 -> 35 sheets, boundary 18.0 -> 8.3 diagonals.
+  /// 1.8%, median two-sided Hausdorff distance 0.38% -> 0.49% (Q-MAT:
+  /// 1.01%).
   ///
   /// HairAngle: before the collapses, the triangles of Voronoi faces whose
   /// two surface samples subtend less than this angle (degrees) at their

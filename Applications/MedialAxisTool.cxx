@@ -125,7 +125,8 @@ Options:
                         samples subtend less than DEG at their spheres stand
                         for the sampling, not the thickness, and are eroded
                         before simplification, keeping the topology
-                        (default 30; larger: fewer, larger sheets; 0: off)
+                        (default 30; larger: fewer, larger sheets; 0: off;
+                        without --sharp, as --fin-budget and --pleat-angle)
   --pleat-angle DEG     no collapse may add pairs of triangles meeting below
                         DEG (default 90; 10 only refuses folded triangles)
   --fin-budget F        fins (small sheets that branch off a larger one over

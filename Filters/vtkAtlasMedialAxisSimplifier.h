@@ -174,7 +174,8 @@ public:
   /// sampling of a curved or bumpy surface, not for the solid's thickness,
   /// and become the fins that cut the sheets into pieces. Larger: fewer,
   /// larger sheets; smaller: closer to small bumps; 0: off. Default 30.
-  /// Field data ErodedTriangles counts the triangles eroded.
+  /// Organic shapes only (PreserveSharpFeatures off), from 200 target
+  /// spheres up. Field data ErodedTriangles counts the triangles eroded.
   vtkSetClampMacro(HairAngle, double, 0.0, 90.0);
   vtkGetMacro(HairAngle, double);
   ///@}
@@ -185,6 +186,7 @@ public:
   /// at most this fraction of the surface's bounding-box diagonal are
   /// collapsed into the junction (whose spheres stay) at a few checkpoints
   /// on the way to the target. 0 keeps every fin. Default 0.005 (0.5%).
+  /// Organic shapes only (PreserveSharpFeatures off).
   /// Field data FinCollapses counts the collapses.
   vtkSetClampMacro(FinBudget, double, 0.0, 0.1);
   vtkGetMacro(FinBudget, double);

@@ -197,8 +197,8 @@ public:
   /// (default 30; 0: off), and fins whose spheres reach out of their
   /// junction by at most FinBudget of the diagonal are collapsed into the
   /// sheet they hang on (default 0.005; 0: off). Larger values: fewer,
-  /// larger sheets. Structural strategy only; field data ErodedTriangles
-  /// and FinCollapses.
+  /// larger sheets. Structural strategy and organic shapes only (sharp
+  /// features not preserved); field data ErodedTriangles and FinCollapses.
   vtkSetClampMacro(HairAngle, double, 0.0, 90.0);
   vtkGetMacro(HairAngle, double);
   vtkSetClampMacro(FinBudget, double, 0.0, 0.1);

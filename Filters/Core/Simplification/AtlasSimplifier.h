@@ -194,13 +194,14 @@ struct AtlasSimplifierOptions
   /// (Simplification/HairErosion.h). Such faces stand for the sampling of
   /// a curved or bumpy surface, not for the solid's thickness, and become
   /// the fins that cut the sheets. Larger: cleaner; smaller: closer; 0: off.
-  /// Only for targets of StrictLinkConditionVertexCount (200) and more.
+  /// Only for organic shapes (PreserveSharpFeatures off) and targets of
+  /// StrictLinkConditionVertexCount (200) and more.
   double HairAngle = 30.0;
   /// FinBudget: fins left after that (small sheets branching off a larger
   /// one) whose balls reach out of the cones of their junction by at most
   /// this fraction of the diagonal are collapsed into the junction at a few
   /// checkpoints on the way to the target (the last at 1.1 times it); 0:
-  /// never.
+  /// never. Only for organic shapes (PreserveSharpFeatures off).
   double FinBudget = 0.005;
   /// PleatAngle: with PreventFolds, a collapse may not leave more pairs of
   /// triangles meeting below this dihedral angle (degrees) around the
@@ -249,8 +250,8 @@ struct AtlasSimplifierOptions
 /// Whether `options` let Euler-neutral collapses break the link condition
 /// (FringeCollapses, with Automatic resolved).
 bool UsesFringeCollapses(const AtlasSimplifierOptions& options);
-/// Whether `options` erode hair before the collapses (HairAngle above 0 and
-/// a target of at least StrictLinkConditionVertexCount).
+/// Whether `options` erode hair before the collapses (HairAngle above 0, no
+/// sharp features and a target of at least StrictLinkConditionVertexCount).
 bool UsesHairErosion(const AtlasSimplifierOptions& options);
 /// Whether `options` guard the collapses against pleats (PleatAngle above
 /// 10 degrees, no sharp features and a target of at least

@@ -125,10 +125,11 @@ Options:
                         samples subtend less than DEG at their spheres stand
                         for the sampling, not the thickness, and are eroded
                         before simplification, keeping the topology
-                        (default 30; larger: fewer, larger sheets; 0: off;
+                        (default 45; larger: fewer, larger sheets; 0: off;
                         without --sharp, as --fin-budget and --pleat-angle)
-  --pleat-angle DEG     no collapse may add pairs of triangles meeting below
-                        DEG (default 90; 10 only refuses folded triangles)
+  --pleat-angle DEG     no collapse nor the final fit may add pairs of
+                        triangles meeting below DEG (default 90; 10 only
+                        refuses folded triangles)
   --fin-budget F        fins (small sheets that branch off a larger one over
                         a small bump of the surface) whose spheres reach out
                         of their junction by at most F of the diagonal, as a
@@ -255,7 +256,7 @@ struct Options
        FinalFit = true, FitBoundaryRadii = true, Repair = true;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
-  double HairAngle = 30.0;
+  double HairAngle = 45.0;
   double FinBudget = 0.005;
   double PleatAngle = 90.0;
   double FeatureAngle = 45.0;

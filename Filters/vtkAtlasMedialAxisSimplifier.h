@@ -173,7 +173,7 @@ public:
   /// their free edges inwards, keeping the topology: they stand for the
   /// sampling of a curved or bumpy surface, not for the solid's thickness,
   /// and become the fins that cut the sheets into pieces. Larger: fewer,
-  /// larger sheets; smaller: closer to small bumps; 0: off. Default 30.
+  /// larger sheets; smaller: closer to small bumps; 0: off. Default 45.
   /// Organic shapes only (PreserveSharpFeatures off), from 200 target
   /// spheres up. Field data ErodedTriangles counts the triangles eroded.
   vtkSetClampMacro(HairAngle, double, 0.0, 90.0);
@@ -197,8 +197,9 @@ public:
   /// triangles meeting below this dihedral angle (degrees) around the merged
   /// sphere than there were (pleats), besides never folding two triangles
   /// onto each other; where no collapse is left, only the latter holds.
-  /// Organic shapes only (PreserveSharpFeatures off), from 200 target
-  /// spheres up. Default 90; 10 guards against folds only.
+  /// The final fit holds to the same angle. Organic shapes only
+  /// (PreserveSharpFeatures off), from 200 target spheres up. Default 90;
+  /// 10 guards against folds only.
   vtkSetClampMacro(PleatAngle, double, 10.0, 90.0);
   vtkGetMacro(PleatAngle, double);
   ///@}
@@ -351,7 +352,7 @@ protected:
   bool ClampRadiiToAtlas = false;
   double ErrorBound = 0.0;
   int ErrorBands = BandsAutomatic;
-  double HairAngle = 30.0;
+  double HairAngle = 45.0;
   double FinBudget = 0.005;
   double PleatAngle = 90.0;
   bool AbsorbSpikes = false;

@@ -194,7 +194,7 @@ public:
   /// Cleaner or closer (see vtkAtlasMedialAxisSimplifier::HairAngle and
   /// FinBudget): Voronoi faces whose two samples subtend less than
   /// HairAngle degrees at their spheres are eroded before the collapses
-  /// (default 30; 0: off), and fins whose spheres reach out of their
+  /// (default 45; 0: off), and fins whose spheres reach out of their
   /// junction by at most FinBudget of the diagonal are collapsed into the
   /// sheet they hang on (default 0.005; 0: off). Larger values: fewer,
   /// larger sheets. Structural strategy and organic shapes only (sharp
@@ -336,7 +336,7 @@ protected:
   bool PreserveSharpFeatures = false;
   int FringeCollapses = vtkAtlasMedialAxisSimplifier::FringeAutomatic;
   int ErrorBands = vtkAtlasMedialAxisSimplifier::BandsAutomatic;
-  double HairAngle = 30.0;
+  double HairAngle = 45.0;
   double FinBudget = 0.005;
   double PleatAngle = 90.0;
   bool EulerNeutralSpikeCollapses = false;

@@ -236,7 +236,7 @@ class CommandLineTest(unittest.TestCase):
                     "junction_length_diagonals"):
             self.assertIn(key, clean)
         self.assertLessEqual(clean["n80"], clean["sheets"])
-        self.assertEqual(data["parameters"]["hair_angle"], 30)
+        self.assertEqual(data["parameters"]["hair_angle"], 45)
         self.assertEqual(data["parameters"]["pleat_angle"], 90)
         self.assertIn("sheets:", result.stdout)
         self.assertGreater(data["seconds"]["Total"], 0.0)

@@ -373,27 +373,34 @@ bool Degenerate(const MedialMesh& mesh, const std::array<Index, 3>& t)
   return IsDegenerateTriangle(mesh.Centers[t[0]], mesh.Centers[t[1]], mesh.Centers[t[2]]);
 }
 
-bool Folded(const MedialMesh& mesh, const TriangleHinge& h)
+bool Folded(const MedialMesh& mesh, const TriangleHinge& h, double cosFold)
 {
   const auto& c = mesh.Centers;
-  return IsFold(c[h.U], c[h.V], c[h.X], c[h.Y]);
+  return IsFold(c[h.U], c[h.V], c[h.X], c[h.Y], cosFold);
 }
 
 /// What a move of the spheres must not create: degenerate triangles, folds
-/// and spike edges (stability ratio below the threshold), unless the mesh
-/// had them before the fit.
+/// (and pleats, below EnvelopeFitOptions::FoldAngle) and spike edges
+/// (stability ratio below the threshold), unless the mesh had them before
+/// the fit.
 class ValidityGuard
 {
 public:
-  ValidityGuard(
-    const MedialMesh& mesh, const std::vector<std::array<Index, 2>>& edges, double spikeThreshold)
+  ValidityGuard(const MedialMesh& mesh, const std::vector<std::array<Index, 2>>& edges,
+    double spikeThreshold, double foldAngleDegrees)
     : Edges(edges)
     , Hinges(TriangleHinges(mesh))
     , SpikeThreshold(spikeThreshold)
+    // Folds (10 degrees) are always guarded, with the exact constant;
+    // larger angles guard against pleats too.
+    , GuardCosine(foldAngleDegrees > FoldAngleDegrees
+          ? std::cos(foldAngleDegrees * 3.14159265358979323846 / 180.0)
+          : FoldCosine)
   {
     for (const TriangleHinge& h : this->Hinges)
     {
-      this->FoldedBefore.push_back(Folded(mesh, h));
+      this->FoldedBefore.push_back(Folded(mesh, h, FoldCosine));
+      this->PleatedBefore.push_back(Folded(mesh, h, this->GuardCosine));
     }
     for (const auto& t : mesh.Faces)
     {
@@ -462,7 +469,9 @@ public:
       for (std::size_t i = 0; i < this->Hinges.size(); ++i)
       {
         const TriangleHinge& h = this->Hinges[i];
-        if (!this->FoldedBefore[i] && Folded(candidate, h))
+        // A pleat before the fit may open up, not fold onto itself.
+        if ((!this->PleatedBefore[i] && Folded(candidate, h, this->GuardCosine)) ||
+          (!this->FoldedBefore[i] && Folded(candidate, h, FoldCosine)))
         {
           for (Index v : { h.U, h.V, h.X, h.Y })
           {
@@ -506,7 +515,8 @@ private:
   const std::vector<std::array<Index, 2>>& Edges;
   std::vector<TriangleHinge> Hinges;
   double SpikeThreshold;
-  std::vector<std::uint8_t> FoldedBefore, DegenerateBefore, SpikeBefore;
+  double GuardCosine;
+  std::vector<std::uint8_t> FoldedBefore, PleatedBefore, DegenerateBefore, SpikeBefore;
 };
 
 /// The normal equations of sum w_i (F_i + J_i delta)^2: 4 x 4 blocks in the
@@ -681,7 +691,7 @@ EnvelopeFitResult FitMedialEnvelope(MedialMesh& mesh, const FitTarget& target,
   const BlockPattern pattern = MakePattern(mesh, edges, freedom);
   const std::vector<double> limit = StepLimits(mesh, edges, options.StepLimit);
   const Index free = static_cast<Index>(pattern.RowStart.size()) - 1;
-  const ValidityGuard guard(mesh, edges, options.SpikeThreshold);
+  const ValidityGuard guard(mesh, edges, options.SpikeThreshold, options.FoldAngle);
   std::vector<Correspondence> corr, trial;
   Measure(mesh, points, options.NumberOfThreads, nullptr, corr);
   const std::vector<Point3>& surface = target.Surface.empty() ? points : target.Surface;

@@ -980,6 +980,12 @@ AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
       fit.Iterations = options.FitIterations;
       fit.SpikeThreshold = options.SpikeThreshold;
       fit.SpikeRepairWeight = options.FitSpikeRepair;
+      // The fit may not pleat what the collapses kept smooth (with the pleat
+      // guard, the fit made every pleat left: 16 organic meshes at 10,000 ->
+      // 1,000, median 1.8% -> 0%). Not on CAD parts: there the guard holds
+      // back moves that close the envelope along sharp edges (fandisk,
+      // 50,000 -> 5,000: pleats 2.6% -> 1.6%, Hausdorff 0.58% -> 0.83%).
+      fit.FoldAngle = collapseOptions.FoldAngle;
       fit.Progress = [&](double) { return !options.Progress || options.Progress(1.0); };
       // CAD parts: feature vertices stay on their sharp edges, and the
       // boundary of the medial sheets, where fillet centre lines run, keeps

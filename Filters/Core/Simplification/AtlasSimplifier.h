@@ -182,10 +182,11 @@ struct AtlasSimplifierOptions
   /// Clean sheets. Three measures keep the medial sheets few, large and
   /// smooth (docs/methods.md, "Clean sheets"); measured on the 16 organic
   /// shared meshes at 10,000 samples -> 1,000 spheres, from all off to all
-  /// on: N80 (the fewest sheets holding 80% of the area) median 18 -> 7.5,
+  /// on: N80 (the fewest sheets holding 80% of the area) median 18 -> 5.5,
   /// pleats (two-triangle edges meeting below 90 degrees) median 7.4% ->
-  /// 1.8%, median two-sided Hausdorff distance 0.38% -> 0.49% (Q-MAT:
-  /// 1.01%).
+  /// 0%, median two-sided Hausdorff distance 0.379% -> 0.447% (Q-MAT: N80
+  /// 5.5, 1.01%); at 50,000 -> 5,000 N80 167.5 -> 5, pleats 13.7% -> 0%,
+  /// distance 0.404% -> 0.350% (Q-MAT: 42, 0.549%).
   ///
   /// HairAngle: before the collapses, the triangles of Voronoi faces whose
   /// two surface samples subtend less than this angle (degrees) at their
@@ -196,7 +197,7 @@ struct AtlasSimplifierOptions
   /// the fins that cut the sheets. Larger: cleaner; smaller: closer; 0: off.
   /// Only for organic shapes (PreserveSharpFeatures off) and targets of
   /// StrictLinkConditionVertexCount (200) and more.
-  double HairAngle = 30.0;
+  double HairAngle = 45.0;
   /// FinBudget: fins left after that (small sheets branching off a larger
   /// one) whose balls reach out of the cones of their junction by at most
   /// this fraction of the diagonal are collapsed into the junction at a few
@@ -207,8 +208,10 @@ struct AtlasSimplifierOptions
   /// triangles meeting below this dihedral angle (degrees) around the
   /// merged vertex than there were; 10 refuses only triangles folded onto
   /// each other. Where no collapse is left, it gives way to the 10 degree
-  /// fold guard. Only for organic shapes (PreserveSharpFeatures off) and
-  /// targets of StrictLinkConditionVertexCount and more.
+  /// fold guard. The final fit guards its moves at the same angle (no move
+  /// pleats two triangles that met at it or more). Only for organic shapes
+  /// (PreserveSharpFeatures off) and targets of
+  /// StrictLinkConditionVertexCount and more.
   double PleatAngle = 90.0;
   /// Refuse collapses that fold two triangles onto each other (dihedral
   /// angle below 10 degrees); allowed anyway once nothing else is left.

@@ -4,7 +4,13 @@
 //   medialaxis-benchmark [--samples N] [--target V] [--cad] [--threads T] [--scaling]
 //                        [--counts N1,N2,...] [--envelope] [--error-samples S]
 //                        [--envelope-samples E] [--delaunay] [--adaptive|--uniform] [--no-fit]
-//                        [--shape torus|box|...] [--resolution R] mesh...
+//                        [--shape torus|box|...] [--resolution R] [--json FILE] mesh...
+//
+// Each run ends with a summary line: the stages, then the pipeline's total
+// (reading the mesh to the simplified MAT, without --envelope's stages) and
+// its peak, and with --delaunay the ratio of the total to the Delaunay
+// triangulation of the same samples. --json FILE writes the same figures,
+// one record per run, for scripts (docs/performance.md).
 //
 // Memory: the process's resident peak during each stage, and in brackets
 // how far it rose above the resident size at the stage's start.
@@ -25,7 +31,8 @@
 // --no-fit leaves out the simplifier's final fit (AtlasSimplifierOptions::
 // FinalFit), whose time is otherwise part of "simplify" and printed alone.
 // --delaunay also times CGAL's Delaunay triangulation of the same samples
-// alone (outside the stages: the least a Voronoi-based MAT pays).
+// alone (outside the stages and the total: the least a Voronoi-based MAT
+// pays).
 // The heap is tuned (HeapTuning.h) unless MEDIALAXIS_TUNE_HEAP=0; the
 // first line printed says how.
 #include "DelaunayBaseline.h"
@@ -159,6 +166,9 @@ bool LoadSurface(
 std::size_t TopologyGuard = AtlasSimplifierOptions().TopologyGuardVertexCount;
 bool Envelope = false;
 bool DelaunayBaseline = false;
+double DelaunaySeconds = 0.0; // of the last run, with DelaunayBaseline
+std::string JsonPath;
+std::vector<std::string> JsonRecords;
 int AdaptiveSampling = -1; // -1: as the presets, adaptive unless --cad
 bool FinalFit = true;
 std::size_t ErrorSamples = 100000;
@@ -221,6 +231,7 @@ std::vector<Stage> RunPipeline(
     const Stage delaunay = Measure("delaunay", [&] { cells = DelaunayCellCount(sites.Points); });
     std::printf("  Delaunay of the same samples alone: %zu cells, %.3f s, %.0f MB (+%.0f)\n", cells,
       delaunay.Seconds, delaunay.PeakMB, delaunay.ExtraMB);
+    DelaunaySeconds = delaunay.Seconds;
   }
   RestrictedVoronoiDiagram rvd;
   stages.push_back(Measure("rvd", [&] { rvd = ComputeRestrictedVoronoi(mesh, sites.Points); }));
@@ -300,15 +311,80 @@ std::vector<Stage> RunPipeline(
   return stages;
 }
 
+// The pipeline's stages: all but the envelope and error evaluation.
+bool InPipeline(const Stage& s)
+{
+  return s.Name != "envelope" && s.Name != "envelope-vtk" && s.Name != "error";
+}
+
 void PrintStages(const std::string& name, std::size_t triangles, std::size_t samples,
-  const std::vector<Stage>& stages)
+  const std::vector<Stage>& stages, std::size_t target = 0)
 {
   std::printf("%-22s %8zu tris %7zu samples |", name.c_str(), triangles, samples);
+  double total = 0.0, peak = 0.0;
   for (const Stage& s : stages)
   {
     std::printf(" %s %.3f s %.0f MB (+%.0f) |", s.Name.c_str(), s.Seconds, s.PeakMB, s.ExtraMB);
+    if (InPipeline(s))
+    {
+      total += s.Seconds;
+      peak = std::max(peak, s.PeakMB);
+    }
+  }
+  const bool ratio = DelaunayBaseline && samples > 0 && DelaunaySeconds > 0.0;
+  std::printf(" total %.3f s, peak %.0f MB", total, peak);
+  if (ratio)
+  {
+    std::printf(" | Delaunay %.3f s, ratio %.1fx", DelaunaySeconds, total / DelaunaySeconds);
   }
   std::printf("\n");
+  if (JsonPath.empty() || samples == 0)
+  {
+    return;
+  }
+  std::ostringstream json;
+  json.precision(6);
+  json << "{\"mesh\": \"" << name << "\", \"triangles\": " << triangles
+       << ", \"samples\": " << samples << ", \"target\": " << target
+       << ", \"total_seconds\": " << total << ", \"peak_mb\": " << peak;
+  if (ratio)
+  {
+    json << ", \"delaunay_seconds\": " << DelaunaySeconds
+         << ", \"ratio_to_delaunay\": " << total / DelaunaySeconds;
+  }
+  json << ", \"stages\": [";
+  for (std::size_t i = 0; i < stages.size(); ++i)
+  {
+    json << (i ? ", " : "") << "{\"name\": \"" << stages[i].Name
+         << "\", \"seconds\": " << stages[i].Seconds << ", \"peak_mb\": " << stages[i].PeakMB
+         << ", \"extra_mb\": " << stages[i].ExtraMB << "}";
+  }
+  json << "]}";
+  JsonRecords.push_back(json.str());
+}
+
+// Writes the records of every run as one JSON array; false (with a message)
+// when the file cannot be written.
+bool WriteJson()
+{
+  if (JsonPath.empty())
+  {
+    return true;
+  }
+  std::ofstream out(JsonPath);
+  out << "[\n";
+  for (std::size_t i = 0; i < JsonRecords.size(); ++i)
+  {
+    out << "  " << JsonRecords[i] << (i + 1 < JsonRecords.size() ? ",\n" : "\n");
+  }
+  out << "]\n";
+  if (!out)
+  {
+    std::fprintf(stderr, "cannot write %s\n", JsonPath.c_str());
+    return false;
+  }
+  std::printf("wrote %s\n", JsonPath.c_str());
+  return true;
 }
 }
 
@@ -350,6 +426,8 @@ int main(int argc, char* argv[])
       EnvelopeSamples = std::stoul(argv[++i]);
     else if (arg == "--shape" && i + 1 < argc)
       inputs.emplace_back(argv[++i], true);
+    else if (arg == "--json" && i + 1 < argc)
+      JsonPath = argv[++i];
     else if (arg == "--resolution" && i + 1 < argc)
       ShapeResolution = std::stoi(argv[++i]);
     else if (arg == "--counts" && i + 1 < argc)
@@ -368,7 +446,7 @@ int main(int argc, char* argv[])
                 << " [--samples N] [--target V] [--cad] [--threads T] [--scaling]"
                    " [--counts N1,N2,...] [--envelope] [--error-samples S]"
                    " [--envelope-samples E] [--delaunay] [--adaptive|--uniform] [--no-fit]"
-                   " [--shape torus|sphere|box] [--resolution R] mesh...\n";
+                   " [--shape torus|sphere|box] [--resolution R] [--json FILE] mesh...\n";
       return 0;
     }
     else
@@ -398,7 +476,7 @@ int main(int argc, char* argv[])
           std::vector<Stage> stages = loading;
           const auto run = RunPipeline(mesh, samples, target, cad);
           stages.insert(stages.end(), run.begin(), run.end());
-          PrintStages(name, mesh.Triangles.size(), samples, stages);
+          PrintStages(name, mesh.Triangles.size(), samples, stages, target);
           continue;
         }
         PrintStages(name + " (input)", mesh.Triangles.size(), 0, loading);
@@ -408,7 +486,7 @@ int main(int argc, char* argv[])
         for (std::size_t n : counts)
         {
           runs.push_back(RunPipeline(mesh, n, n / 10, cad));
-          PrintStages(name, mesh.Triangles.size(), n, runs.back());
+          PrintStages(name, mesh.Triangles.size(), n, runs.back(), n / 10);
         }
         // Least-squares slope of log(time) against log(samples), per stage.
         std::printf("%-22s growth exponent (time ~ samples^k):", name.c_str());
@@ -458,6 +536,6 @@ int main(int argc, char* argv[])
         std::printf("%-22s memory growth exponent (MB above the mesh ~ samples^k): %.2f\n",
           name.c_str(), (n * sxy - sx * sy) / (n * sxx - sx * sx));
       }
-      return 0;
+      return WriteJson() ? 0 : 1;
     });
 }

@@ -47,6 +47,30 @@ public:
     return id;
   }
 
+  /// Whether some point at squared distance d2 < `squaredRadius` from
+  /// `query` has stop(d2) true; the search ends at the first one. Where a
+  /// single hit decides (is any point nearer than ...?), this prunes
+  /// sooner than finding the nearest point and testing it.
+  template <typename Stop>
+  bool AnyWithin(const Point3& query, double squaredRadius, Stop&& stop) const
+  {
+    struct FirstHit
+    {
+      double Radius;
+      Stop* Test;
+      bool Found;
+      bool full() const { return true; }
+      double worstDist() const { return this->Radius; }
+      bool addPoint(double d2, std::uint32_t)
+      {
+        this->Found = d2 < this->Radius && (*this->Test)(d2);
+        return !this->Found;
+      }
+    } result{ squaredRadius, &stop, false };
+    this->Tree.findNeighbors(result, query.data(), nanoflann::SearchParams());
+    return result.Found;
+  }
+
   /// Points within `radius` (inclusive), with squared distances; sorted by
   /// distance if `sorted`, else in the tree's own (deterministic) order.
   void WithinRadius(const Point3& query, double radius,

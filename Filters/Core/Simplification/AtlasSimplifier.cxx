@@ -534,9 +534,14 @@ bool AtlasPolicy::WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b,
   }
   const SpherePrimitive ball{ { target[0], target[1], target[2] }, target[3] };
   // How far the merged ball pokes out of the surface, seen from the nearest
-  // site of all (its Atlas may lie on one side of a thin part only).
-  const Point3& nearest = this->Site[this->SiteTree->Nearest(ball.Center)];
-  if (ball.Radius - std::sqrt(Distance2(ball.Center, nearest)) > this->ErrorBound)
+  // site of all (its Atlas may lie on one side of a thin part only). The
+  // test is monotone in the distance, so the nearest site fails it exactly
+  // when some site does: the search stops at the first (a site can only
+  // fail it within Radius - ErrorBound, widened for rounding).
+  const double reach = ball.Radius - this->ErrorBound;
+  if (reach > 0.0 &&
+    this->SiteTree->AnyWithin(ball.Center, reach * reach * (1.0 + 1e-9),
+      [&](double d2) { return ball.Radius - std::sqrt(d2) > this->ErrorBound; }))
   {
     return false;
   }

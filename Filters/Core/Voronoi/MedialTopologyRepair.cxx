@@ -44,13 +44,25 @@ struct FaceIncidence
     , FaceEdges(mesh.Faces.size())
     , FaceCount(this->Edges.size(), 0)
     , Start(this->Edges.size() + 1, 0)
+    , FirstEdge(mesh.NumberOfVertices() + 1, 0)
   {
+    // Edges are sorted by their smaller vertex: the edges of each vertex as
+    // the smaller one form a run, found in constant time (a few edges long),
+    // where a binary search over all edges missed the cache at every step.
+    for (const EdgeKey& e : this->Edges)
+    {
+      ++this->FirstEdge[e[0] + 1];
+    }
+    for (std::size_t v = 0; v + 1 < this->FirstEdge.size(); ++v)
+    {
+      this->FirstEdge[v + 1] += this->FirstEdge[v];
+    }
     for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
     {
       const auto& t = mesh.Faces[f];
       for (int k = 0; k < 3; ++k)
       {
-        this->FaceEdges[f][k] = EdgeId(this->Edges, t[k], t[(k + 1) % 3]);
+        this->FaceEdges[f][k] = this->Id(t[k], t[(k + 1) % 3]);
         ++this->FaceCount[this->FaceEdges[f][k]];
       }
     }
@@ -69,11 +81,21 @@ struct FaceIncidence
     }
   }
 
+  /// The index of edge (a, b) in Edges, which must hold it (as EdgeId).
+  std::size_t Id(Index a, Index b) const
+  {
+    const EdgeKey key = Key(a, b);
+    auto first = this->Edges.begin() + static_cast<std::ptrdiff_t>(this->FirstEdge[key[0]]);
+    auto last = this->Edges.begin() + static_cast<std::ptrdiff_t>(this->FirstEdge[key[0] + 1]);
+    return static_cast<std::size_t>(std::lower_bound(first, last, key) - this->Edges.begin());
+  }
+
   std::vector<EdgeKey> Edges; // sorted
   std::vector<std::array<std::size_t, 3>> FaceEdges;
   std::vector<int> FaceCount;     // triangles on each edge
   std::vector<std::size_t> Start; // edge -> faces, compressed rows
   std::vector<Index> EdgeFaces;
+  std::vector<std::size_t> FirstEdge; // vertex -> its run of Edges (as the smaller vertex)
 };
 
 void AppendVertex(VoronoiMedialAxisResult& result, const Point3& centre, double radius,
@@ -598,7 +620,7 @@ public:
     std::vector<std::pair<std::size_t, Index>> loopEdgeCap(n); // sorted: edge -> cap face
     for (std::size_t k = 0; k < n; ++k)
     {
-      const std::size_t e = EdgeId(this->Incidence.Edges, loop[k], loop[(k + 1) % n]);
+      const std::size_t e = this->Incidence.Id(loop[k], loop[(k + 1) % n]);
       capEdges[k] = { e, ne + k, ne + (k + 1) % n };
       ++count[e];
       loopEdgeCap[k] = { e, static_cast<Index>(nf + k) };
@@ -671,7 +693,7 @@ private:
     std::vector<std::size_t> rim;
     for (std::size_t k = 0; k < loop.size(); ++k)
     {
-      rim.push_back(EdgeId(this->Incidence.Edges, loop[k], loop[(k + 1) % loop.size()]));
+      rim.push_back(this->Incidence.Id(loop[k], loop[(k + 1) % loop.size()]));
       if (this->Incidence.FaceCount[rim.back()] != 1)
       {
         return false;
@@ -888,11 +910,24 @@ bool FindHub(const MedialMesh& mesh, const std::vector<Index>& loop,
     centroid = centroid + mesh.Centers[v];
   }
   centroid = (1.0 / static_cast<double>(loop.size())) * centroid;
+  // Candidates that fail mostly fail on the vertex the last one failed on:
+  // it is tested first (the answer does not depend on the order).
+  std::size_t blocker = 0;
   auto seesAll = [&](const Point3& p)
   {
-    return queries.Inside(p) &&
-      std::none_of(
-        loop.begin(), loop.end(), [&](Index v) { return queries.Crosses(p, mesh.Centers[v]); });
+    if (!queries.Inside(p) || queries.Crosses(p, mesh.Centers[loop[blocker]]))
+    {
+      return false;
+    }
+    for (std::size_t k = 0; k < loop.size(); ++k)
+    {
+      if (k != blocker && queries.Crosses(p, mesh.Centers[loop[k]]))
+      {
+        blocker = k;
+        return false;
+      }
+    }
+    return true;
   };
   if (seesAll(centroid))
   {

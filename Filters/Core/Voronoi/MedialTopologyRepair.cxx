@@ -593,7 +593,9 @@ std::vector<std::vector<Index>> BoundaryLoops(const MedialMesh& mesh)
 // every triangle with an edge on no other live triangle) leaves exactly the
 // triangles of the complex's closed surfaces and of what they pin down, so a
 // cap that survives it closes one. The complex's incidences are built once;
-// each cap is peeled with them from scratch, as peeling is not incremental.
+// caps made since (AddCap) join each peel as fans of their own, and each
+// candidate cap is peeled with them from scratch, as peeling is not
+// incremental.
 class CapPeeler
 {
 public:
@@ -601,6 +603,10 @@ public:
     : Incidence(mesh)
   {
   }
+
+  /// A cap made over `loop` (a fan from a new vertex): later peels include
+  /// it, as a rebuilt peeler would.
+  void AddCap(const std::vector<Index>& loop) { this->Caps.push_back(loop); }
 
   /// True when the fan from a new vertex over the closed `loop` (of edges
   /// of the complex) would survive peeling.
@@ -610,32 +616,46 @@ public:
     {
       return true;
     }
-    const std::size_t nf = this->Incidence.FaceEdges.size(), ne = this->Incidence.Edges.size(),
-                      n = loop.size();
-    // Cap face k: hub, loop[k], loop[k + 1]; its edges: the loop edge and
-    // spokes k and k + 1 (ids ne + k).
-    std::vector<std::array<std::size_t, 3>> capEdges(n);
+    const std::size_t nf = this->Incidence.FaceEdges.size(), ne = this->Incidence.Edges.size();
+    // The fans: the caps made so far, then the candidate. Fan face i (id
+    // nf + i) is hub, loop[k], loop[k + 1]; its edges: the loop edge and the
+    // spokes to loop[k] and loop[k + 1] (ids ne + the spoke's number).
+    std::vector<std::array<std::size_t, 3>> capEdges;
+    std::vector<std::pair<std::size_t, Index>> loopEdgeCap; // sorted: edge -> fan face
+    std::vector<std::array<std::size_t, 2>> spokeFaces;     // the two fan faces of each spoke
     std::vector<int> count(this->Incidence.FaceCount);
-    count.resize(ne + n, 2);
-    std::vector<std::pair<std::size_t, Index>> loopEdgeCap(n); // sorted: edge -> cap face
-    for (std::size_t k = 0; k < n; ++k)
+    std::size_t candidate = 0; // the candidate's first fan face
+    const auto addFan = [&](const std::vector<Index>& fan)
     {
-      const std::size_t e = this->Incidence.Id(loop[k], loop[(k + 1) % n]);
-      capEdges[k] = { e, ne + k, ne + (k + 1) % n };
-      ++count[e];
-      loopEdgeCap[k] = { e, static_cast<Index>(nf + k) };
+      const std::size_t n = fan.size(), face = capEdges.size(), spoke = spokeFaces.size();
+      for (std::size_t k = 0; k < n; ++k)
+      {
+        const std::size_t e = this->Incidence.Id(fan[k], fan[(k + 1) % n]);
+        capEdges.push_back({ e, ne + spoke + k, ne + spoke + (k + 1) % n });
+        ++count[e];
+        loopEdgeCap.emplace_back(e, static_cast<Index>(nf + face + k));
+        spokeFaces.push_back({ nf + face + k, nf + face + (k + n - 1) % n });
+      }
+    };
+    for (const std::vector<Index>& cap : this->Caps)
+    {
+      addFan(cap);
     }
+    candidate = capEdges.size();
+    addFan(loop);
+    count.resize(ne + spokeFaces.size(), 2);
     std::sort(loopEdgeCap.begin(), loopEdgeCap.end());
+    const std::size_t nc = capEdges.size();
     auto edgesOf = [&](std::size_t f) -> const std::array<std::size_t, 3>&
     { return f < nf ? this->Incidence.FaceEdges[f] : capEdges[f - nf]; };
-    std::vector<char> alive(nf + n, 1);
+    std::vector<char> alive(nf + nc, 1);
     auto isFree = [&](std::size_t f)
     {
       const auto& e = edgesOf(f);
       return count[e[0]] == 1 || count[e[1]] == 1 || count[e[2]] == 1;
     };
     std::vector<Index> stack;
-    for (std::size_t f = 0; f < nf + n; ++f)
+    for (std::size_t f = 0; f < nf + nc; ++f)
     {
       if (isFree(f))
       {
@@ -644,20 +664,21 @@ public:
     }
     auto pushFacesOf = [&](std::size_t e)
     {
-      if (e >= ne) // a spoke: the cap faces on either side
+      if (e >= ne) // a spoke: the fan faces on either side
       {
-        const std::size_t k = e - ne;
-        stack.push_back(static_cast<Index>(nf + k));
-        stack.push_back(static_cast<Index>(nf + (k + n - 1) % n));
+        for (std::size_t f : spokeFaces[e - ne])
+        {
+          stack.push_back(static_cast<Index>(f));
+        }
         return;
       }
       for (std::size_t i = this->Incidence.Start[e]; i < this->Incidence.Start[e + 1]; ++i)
       {
         stack.push_back(this->Incidence.EdgeFaces[i]);
       }
-      const auto cap = std::lower_bound(loopEdgeCap.begin(), loopEdgeCap.end(),
-        std::pair<std::size_t, Index>{ e, std::numeric_limits<Index>::min() });
-      if (cap != loopEdgeCap.end() && cap->first == e)
+      for (auto cap = std::lower_bound(loopEdgeCap.begin(), loopEdgeCap.end(),
+             std::pair<std::size_t, Index>{ e, std::numeric_limits<Index>::min() });
+           cap != loopEdgeCap.end() && cap->first == e; ++cap)
       {
         stack.push_back(cap->second);
       }
@@ -679,8 +700,8 @@ public:
         }
       }
     }
-    return std::any_of(
-      alive.begin() + static_cast<std::ptrdiff_t>(nf), alive.end(), [](char a) { return a != 0; });
+    return std::any_of(alive.begin() + static_cast<std::ptrdiff_t>(nf + candidate), alive.end(),
+      [](char a) { return a != 0; });
   }
 
 private:
@@ -738,6 +759,7 @@ private:
   }
 
   FaceIncidence Incidence;
+  std::vector<std::vector<Index>> Caps; // made since the incidences were built
 };
 
 // The complex collapsed to a graph: triangles go with a free edge of theirs
@@ -992,7 +1014,7 @@ std::size_t CapLoops(VoronoiMedialAxisResult& result, const std::vector<std::vec
     {
       mesh.Faces.push_back({ hub, loop[k], loop[(k + 1) % loop.size()] });
     }
-    peeler.reset(); // the complex changed: rebuilt when next needed
+    peeler->AddCap(loop); // the complex changed: later peels include the cap
     for (std::size_t k = 0; k < loop.size(); ++k)
     {
       capped.push_back(Key(loop[k], loop[(k + 1) % loop.size()]));

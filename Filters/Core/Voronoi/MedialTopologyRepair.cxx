@@ -5,6 +5,7 @@
 #include "Geometry/Vec3.h"
 #include "Mesh/MedialMesh.h"
 #include "Support/DisjointSets.h"
+#include "Voronoi/CapPeeling.h"
 #include "Voronoi/MedialComplexCleanup.h"
 
 #include <tbb/blocked_range.h>
@@ -22,81 +23,16 @@ namespace medialaxis
 {
 namespace
 {
-using EdgeKey = std::array<Index, 2>;
-
-EdgeKey Key(Index a, Index b)
-{
-  return a < b ? EdgeKey{ a, b } : EdgeKey{ b, a };
-}
+using repair::CapPeeler;
+using repair::EdgeKey;
+using repair::FaceIncidence;
+using repair::Key;
 
 std::size_t EdgeId(const std::vector<EdgeKey>& edges, Index a, Index b)
 {
   return static_cast<std::size_t>(
     std::lower_bound(edges.begin(), edges.end(), Key(a, b)) - edges.begin());
 }
-
-// Which edges each triangle has and which triangles each edge is on, for
-// the peeling walks below.
-struct FaceIncidence
-{
-  explicit FaceIncidence(const MedialMesh& mesh)
-    : Edges(AllEdges(mesh))
-    , FaceEdges(mesh.Faces.size())
-    , FaceCount(this->Edges.size(), 0)
-    , Start(this->Edges.size() + 1, 0)
-    , FirstEdge(mesh.NumberOfVertices() + 1, 0)
-  {
-    // Edges are sorted by their smaller vertex: the edges of each vertex as
-    // the smaller one form a run, found in constant time (a few edges long),
-    // where a binary search over all edges missed the cache at every step.
-    for (const EdgeKey& e : this->Edges)
-    {
-      ++this->FirstEdge[e[0] + 1];
-    }
-    for (std::size_t v = 0; v + 1 < this->FirstEdge.size(); ++v)
-    {
-      this->FirstEdge[v + 1] += this->FirstEdge[v];
-    }
-    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
-    {
-      const auto& t = mesh.Faces[f];
-      for (int k = 0; k < 3; ++k)
-      {
-        this->FaceEdges[f][k] = this->Id(t[k], t[(k + 1) % 3]);
-        ++this->FaceCount[this->FaceEdges[f][k]];
-      }
-    }
-    for (std::size_t e = 0; e < this->Edges.size(); ++e)
-    {
-      this->Start[e + 1] = this->Start[e] + static_cast<std::size_t>(this->FaceCount[e]);
-    }
-    this->EdgeFaces.resize(this->Start.back());
-    std::vector<std::size_t> cursor(this->Start.begin(), this->Start.end() - 1);
-    for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
-    {
-      for (std::size_t e : this->FaceEdges[f])
-      {
-        this->EdgeFaces[cursor[e]++] = static_cast<Index>(f);
-      }
-    }
-  }
-
-  /// The index of edge (a, b) in Edges, which must hold it (as EdgeId).
-  std::size_t Id(Index a, Index b) const
-  {
-    const EdgeKey key = Key(a, b);
-    auto first = this->Edges.begin() + static_cast<std::ptrdiff_t>(this->FirstEdge[key[0]]);
-    auto last = this->Edges.begin() + static_cast<std::ptrdiff_t>(this->FirstEdge[key[0] + 1]);
-    return static_cast<std::size_t>(std::lower_bound(first, last, key) - this->Edges.begin());
-  }
-
-  std::vector<EdgeKey> Edges; // sorted
-  std::vector<std::array<std::size_t, 3>> FaceEdges;
-  std::vector<int> FaceCount;     // triangles on each edge
-  std::vector<std::size_t> Start; // edge -> faces, compressed rows
-  std::vector<Index> EdgeFaces;
-  std::vector<std::size_t> FirstEdge; // vertex -> its run of Edges (as the smaller vertex)
-};
 
 void AppendVertex(VoronoiMedialAxisResult& result, const Point3& centre, double radius,
   const std::vector<Index>& neighbours)
@@ -588,179 +524,6 @@ std::vector<std::vector<Index>> BoundaryLoops(const MedialMesh& mesh)
   }
   return sorted;
 }
-
-// Whether a cap would close a void: peeling (removing, until none is left,
-// every triangle with an edge on no other live triangle) leaves exactly the
-// triangles of the complex's closed surfaces and of what they pin down, so a
-// cap that survives it closes one. The complex's incidences are built once;
-// caps made since (AddCap) join each peel as fans of their own, and each
-// candidate cap is peeled with them from scratch, as peeling is not
-// incremental.
-class CapPeeler
-{
-public:
-  explicit CapPeeler(const MedialMesh& mesh)
-    : Incidence(mesh)
-  {
-  }
-
-  /// A cap made over `loop` (a fan from a new vertex): later peels include
-  /// it, as a rebuilt peeler would.
-  void AddCap(const std::vector<Index>& loop) { this->Caps.push_back(loop); }
-
-  /// True when the fan from a new vertex over the closed `loop` (of edges
-  /// of the complex) would survive peeling.
-  bool CapClosesVoid(const std::vector<Index>& loop) const
-  {
-    if (this->BoundsSmallPatch(loop))
-    {
-      return true;
-    }
-    const std::size_t nf = this->Incidence.FaceEdges.size(), ne = this->Incidence.Edges.size();
-    // The fans: the caps made so far, then the candidate. Fan face i (id
-    // nf + i) is hub, loop[k], loop[k + 1]; its edges: the loop edge and the
-    // spokes to loop[k] and loop[k + 1] (ids ne + the spoke's number).
-    std::vector<std::array<std::size_t, 3>> capEdges;
-    std::vector<std::pair<std::size_t, Index>> loopEdgeCap; // sorted: edge -> fan face
-    std::vector<std::array<std::size_t, 2>> spokeFaces;     // the two fan faces of each spoke
-    std::vector<int> count(this->Incidence.FaceCount);
-    std::size_t candidate = 0; // the candidate's first fan face
-    const auto addFan = [&](const std::vector<Index>& fan)
-    {
-      const std::size_t n = fan.size(), face = capEdges.size(), spoke = spokeFaces.size();
-      for (std::size_t k = 0; k < n; ++k)
-      {
-        const std::size_t e = this->Incidence.Id(fan[k], fan[(k + 1) % n]);
-        capEdges.push_back({ e, ne + spoke + k, ne + spoke + (k + 1) % n });
-        ++count[e];
-        loopEdgeCap.emplace_back(e, static_cast<Index>(nf + face + k));
-        spokeFaces.push_back({ nf + face + k, nf + face + (k + n - 1) % n });
-      }
-    };
-    for (const std::vector<Index>& cap : this->Caps)
-    {
-      addFan(cap);
-    }
-    candidate = capEdges.size();
-    addFan(loop);
-    count.resize(ne + spokeFaces.size(), 2);
-    std::sort(loopEdgeCap.begin(), loopEdgeCap.end());
-    const std::size_t nc = capEdges.size();
-    auto edgesOf = [&](std::size_t f) -> const std::array<std::size_t, 3>&
-    { return f < nf ? this->Incidence.FaceEdges[f] : capEdges[f - nf]; };
-    std::vector<char> alive(nf + nc, 1);
-    auto isFree = [&](std::size_t f)
-    {
-      const auto& e = edgesOf(f);
-      return count[e[0]] == 1 || count[e[1]] == 1 || count[e[2]] == 1;
-    };
-    std::vector<Index> stack;
-    for (std::size_t f = 0; f < nf + nc; ++f)
-    {
-      if (isFree(f))
-      {
-        stack.push_back(static_cast<Index>(f));
-      }
-    }
-    auto pushFacesOf = [&](std::size_t e)
-    {
-      if (e >= ne) // a spoke: the fan faces on either side
-      {
-        for (std::size_t f : spokeFaces[e - ne])
-        {
-          stack.push_back(static_cast<Index>(f));
-        }
-        return;
-      }
-      for (std::size_t i = this->Incidence.Start[e]; i < this->Incidence.Start[e + 1]; ++i)
-      {
-        stack.push_back(this->Incidence.EdgeFaces[i]);
-      }
-      for (auto cap = std::lower_bound(loopEdgeCap.begin(), loopEdgeCap.end(),
-             std::pair<std::size_t, Index>{ e, std::numeric_limits<Index>::min() });
-           cap != loopEdgeCap.end() && cap->first == e; ++cap)
-      {
-        stack.push_back(cap->second);
-      }
-    };
-    while (!stack.empty())
-    {
-      const std::size_t f = static_cast<std::size_t>(stack.back());
-      stack.pop_back();
-      if (!alive[f] || !isFree(f))
-      {
-        continue;
-      }
-      alive[f] = 0;
-      for (std::size_t e : edgesOf(f))
-      {
-        if (--count[e] == 1)
-        {
-          pushFacesOf(e);
-        }
-      }
-    }
-    return std::any_of(alive.begin() + static_cast<std::ptrdiff_t>(nf + candidate), alive.end(),
-      [](char a) { return a != 0; });
-  }
-
-private:
-  // The quick answer for most loops that are not holes: the rim of a small
-  // flap, a patch of triangles (joined across edges on exactly two) whose
-  // only free edges are the loop's. False when unsure.
-  bool BoundsSmallPatch(const std::vector<Index>& loop) const
-  {
-    constexpr std::size_t limit = 64; // triangles; beyond, peeling decides
-    std::vector<std::size_t> rim;
-    for (std::size_t k = 0; k < loop.size(); ++k)
-    {
-      rim.push_back(this->Incidence.Id(loop[k], loop[(k + 1) % loop.size()]));
-      if (this->Incidence.FaceCount[rim.back()] != 1)
-      {
-        return false;
-      }
-    }
-    std::sort(rim.begin(), rim.end());
-    std::vector<Index> patch{ this->Incidence.EdgeFaces[this->Incidence.Start[rim[0]]] };
-    for (std::size_t k = 0; k < patch.size(); ++k)
-    {
-      for (std::size_t e : this->Incidence.FaceEdges[patch[k]])
-      {
-        if (std::binary_search(rim.begin(), rim.end(), e))
-        {
-          continue;
-        }
-        if (this->Incidence.FaceCount[e] != 2)
-        {
-          return false;
-        }
-        for (std::size_t i = this->Incidence.Start[e]; i < this->Incidence.Start[e + 1]; ++i)
-        {
-          const Index f = this->Incidence.EdgeFaces[i];
-          if (std::find(patch.begin(), patch.end(), f) == patch.end())
-          {
-            if (patch.size() == limit)
-            {
-              return false;
-            }
-            patch.push_back(f);
-          }
-        }
-      }
-    }
-    // Closed up: every rim edge must be on the patch, or the loop bounds
-    // more than one patch and is not that simple.
-    return std::all_of(rim.begin(), rim.end(),
-      [&](std::size_t e)
-      {
-        return std::find(patch.begin(), patch.end(),
-                 this->Incidence.EdgeFaces[this->Incidence.Start[e]]) != patch.end();
-      });
-  }
-
-  FaceIncidence Incidence;
-  std::vector<std::vector<Index>> Caps; // made since the incidences were built
-};
 
 // The complex collapsed to a graph: triangles go with a free edge of theirs
 // (an elementary collapse), then edges with a free end. Its cycles are the

@@ -373,10 +373,10 @@ bool Degenerate(const MedialMesh& mesh, const std::array<Index, 3>& t)
   return IsDegenerateTriangle(mesh.Centers[t[0]], mesh.Centers[t[1]], mesh.Centers[t[2]]);
 }
 
-bool Folded(const MedialMesh& mesh, const TriangleHinge& h, double cosFold)
+int HingeFoldLevel(const MedialMesh& mesh, const TriangleHinge& h, double cosPleat)
 {
   const auto& c = mesh.Centers;
-  return IsFold(c[h.U], c[h.V], c[h.X], c[h.Y], cosFold);
+  return FoldLevel(c[h.U], c[h.V], c[h.X], c[h.Y], cosPleat);
 }
 
 /// What a move of the spheres must not create: degenerate triangles, folds
@@ -399,8 +399,8 @@ public:
   {
     for (const TriangleHinge& h : this->Hinges)
     {
-      this->FoldedBefore.push_back(Folded(mesh, h, FoldCosine));
-      this->PleatedBefore.push_back(Folded(mesh, h, this->GuardCosine));
+      this->FoldBefore.push_back(
+        static_cast<std::uint8_t>(HingeFoldLevel(mesh, h, this->GuardCosine)));
     }
     for (const auto& t : mesh.Faces)
     {
@@ -469,9 +469,9 @@ public:
       for (std::size_t i = 0; i < this->Hinges.size(); ++i)
       {
         const TriangleHinge& h = this->Hinges[i];
-        // A pleat before the fit may open up, not fold onto itself.
-        if ((!this->PleatedBefore[i] && Folded(candidate, h, this->GuardCosine)) ||
-          (!this->FoldedBefore[i] && Folded(candidate, h, FoldCosine)))
+        // No pleat where there was none, no fold where there was none (a
+        // pleat before the fit may open up, not fold onto itself).
+        if (HingeFoldLevel(candidate, h, this->GuardCosine) > this->FoldBefore[i])
         {
           for (Index v : { h.U, h.V, h.X, h.Y })
           {
@@ -516,7 +516,8 @@ private:
   std::vector<TriangleHinge> Hinges;
   double SpikeThreshold;
   double GuardCosine;
-  std::vector<std::uint8_t> FoldedBefore, PleatedBefore, DegenerateBefore, SpikeBefore;
+  std::vector<std::uint8_t> FoldBefore; // FoldLevel of each hinge before the fit
+  std::vector<std::uint8_t> DegenerateBefore, SpikeBefore;
 };
 
 /// The normal equations of sum w_i (F_i + J_i delta)^2: 4 x 4 blocks in the

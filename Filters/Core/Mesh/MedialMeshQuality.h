@@ -79,6 +79,23 @@ inline bool IsFold(
   const Point3 n2 = Cross(y - v, e); // = (u - v) x (y - v)
   return Dot(n1, n2) < -cosFold * Norm(n1) * Norm(n2);
 }
+
+/// IsFold at two angles from one pair of normals: 2 where the triangles
+/// fold onto each other (IsFold), 1 where they only meet below the angle
+/// whose cosine is `cosPleat` (a pleat), 0 otherwise.
+inline int FoldLevel(
+  const Point3& u, const Point3& v, const Point3& x, const Point3& y, double cosPleat)
+{
+  const Point3 e = v - u;
+  const Point3 n1 = Cross(e, x - u);
+  const Point3 n2 = Cross(y - v, e); // = (u - v) x (y - v)
+  const double dot = Dot(n1, n2);
+  if (dot < -FoldCosine * Norm(n1) * Norm(n2))
+  {
+    return 2;
+  }
+  return dot < -cosPleat * Norm(n1) * Norm(n2) ? 1 : 0;
+}
 }
 
 #endif

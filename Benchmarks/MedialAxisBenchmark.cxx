@@ -456,6 +456,12 @@ int main(int argc, char* argv[])
   {
     inputs.emplace_back("torus", true);
   }
+  if (!JsonPath.empty() && !std::ofstream(JsonPath))
+  {
+    // Said before the runs, not after them.
+    std::fprintf(stderr, "cannot write %s\n", JsonPath.c_str());
+    return 2;
+  }
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   std::printf("heap: %s\n", medialaxis::HeapTuned() ? tunables : "glibc's defaults");
 

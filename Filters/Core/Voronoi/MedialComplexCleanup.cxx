@@ -25,6 +25,8 @@ void Compact(VoronoiMedialAxisResult& result, const std::vector<char>& vertexAli
   std::vector<Index> newId(mesh.Centers.size(), -1);
   MedialMesh out;
   std::vector<Index> offsets{ 0 }, sites;
+  std::vector<double> clearance;
+  const bool withClearance = result.SiteClearance.size() == mesh.Centers.size();
   for (std::size_t v = 0; v < mesh.Centers.size(); ++v)
   {
     if (!vertexAlive[v])
@@ -34,6 +36,10 @@ void Compact(VoronoiMedialAxisResult& result, const std::vector<char>& vertexAli
     newId[v] = static_cast<Index>(out.Centers.size());
     out.Centers.push_back(mesh.Centers[v]);
     out.Radii.push_back(mesh.Radii[v]);
+    if (withClearance)
+    {
+      clearance.push_back(result.SiteClearance[v]);
+    }
     sites.insert(sites.end(), result.AtlasSites.begin() + result.AtlasOffsets[v],
       result.AtlasSites.begin() + result.AtlasOffsets[v + 1]);
     offsets.push_back(static_cast<Index>(sites.size()));
@@ -56,6 +62,7 @@ void Compact(VoronoiMedialAxisResult& result, const std::vector<char>& vertexAli
   result.AtlasOffsets = std::move(offsets);
   result.AtlasSites = std::move(sites);
   result.FaceSitePair = std::move(pairs);
+  result.SiteClearance = std::move(clearance);
 }
 }
 

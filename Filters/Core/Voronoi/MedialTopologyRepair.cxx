@@ -47,6 +47,10 @@ void AppendVertex(VoronoiMedialAxisResult& result, const Point3& centre, double 
   atlas.erase(std::unique(atlas.begin(), atlas.end()), atlas.end());
   result.AtlasSites.insert(result.AtlasSites.end(), atlas.begin(), atlas.end());
   result.AtlasOffsets.push_back(static_cast<Index>(result.AtlasSites.size()));
+  if (!result.SiteClearance.empty())
+  {
+    result.SiteClearance.push_back(-1.0);
+  }
   result.Mesh.Centers.push_back(centre);
   result.Mesh.Radii.push_back(radius);
 }
@@ -70,7 +74,7 @@ std::size_t DropEdgesAcrossSurface(VoronoiMedialAxisResult& result,
       {
         for (std::size_t v = r.begin(); v != r.end(); ++v)
         {
-          clear[v] = std::max(0.0, queries.DistanceLowerBound(mesh.Centers[v]));
+          clear[v] = std::max(0.0, queries.DistanceLowerBound(static_cast<Index>(v)));
         }
       });
   }

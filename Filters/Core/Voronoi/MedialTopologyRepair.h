@@ -32,10 +32,11 @@ struct TopologyRepairQueries
   std::function<double(const Point3&)> Distance;
   /// True when the segment from a to b meets the surface.
   std::function<bool(const Point3&, const Point3&)> Crosses;
-  /// A lower bound on the distance from a point to the surface (0 when
-  /// unknown): a segment shorter than the bounds at its ends added cannot
-  /// meet the surface, and skips Crosses. Optional.
-  std::function<double(const Point3&)> DistanceLowerBound;
+  /// A lower bound on the distance from a vertex of the complex being
+  /// repaired to the surface (0 when unknown): a segment shorter than the
+  /// bounds at its ends added cannot meet the surface, and skips Crosses.
+  /// Optional.
+  std::function<double(Index)> DistanceLowerBound;
 };
 
 struct TopologyRepairCounts

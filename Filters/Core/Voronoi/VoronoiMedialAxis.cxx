@@ -33,6 +33,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace medialaxis
 {
@@ -78,6 +79,28 @@ Point3 Circumcentre(const KPoint& p, const KPoint& q, const KPoint& r, const KPo
   const CGAL::Cartesian_converter<K, Exact> toExact;
   const Exact::Point_3 c = CGAL::circumcenter(toExact(p), toExact(q), toExact(r), toExact(s));
   return { CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z()) };
+}
+
+// A lower bound of the distance from a cell's computed circumcentre to every
+// site, from its empty circumsphere: the distance to its nearest corner, less
+// a margin far above the centre's rounding error; -1 (unknown) for cells so
+// flat that the centre may be far off (volume against the product of three
+// edges below 1e-6).
+double EmptyBallRadius(const Point3& centre, const std::array<Point3, 4>& corners)
+{
+  const Point3 a = corners[1] - corners[0], b = corners[2] - corners[0],
+               c = corners[3] - corners[0];
+  const double volume = std::abs(Dot(a, Cross(b, c)));
+  if (!(volume >= 1e-6 * Norm(a) * Norm(b) * Norm(c)))
+  {
+    return -1.0;
+  }
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const Point3& corner : corners)
+  {
+    nearest = std::min(nearest, Norm(centre - corner));
+  }
+  return nearest * (1.0 - 1e-8);
 }
 
 // Surface queries: inside test by ray casting and distance to the surface,
@@ -285,6 +308,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   // every later pass walks these arrays instead of CGAL's handles.
   std::vector<std::array<Index, 4>> cellSites(nc), cellNeighbours(nc);
   std::vector<Point3> centre(nc);
+  std::vector<double> emptyRadius(nc);
   std::vector<char> inside(nc, 0), ambiguous(nc, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nc, 4096),
     [&](const tbb::blocked_range<std::size_t>& r)
@@ -299,6 +323,9 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
         }
         centre[c] = Circumcentre(cell->vertex(0)->point(), cell->vertex(1)->point(),
           cell->vertex(2)->point(), cell->vertex(3)->point());
+        emptyRadius[c] = EmptyBallRadius(centre[c],
+          { ToPoint(cell->vertex(0)->point()), ToPoint(cell->vertex(1)->point()),
+            ToPoint(cell->vertex(2)->point()), ToPoint(cell->vertex(3)->point()) });
       }
     });
   std::vector<Delaunay::Cell_handle>().swap(cells);
@@ -484,6 +511,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       {
         inside[c] = 1;
         centre[c] = repairedCentre[c];
+        emptyRadius[c] = -1.0; // moved off its circumcentre
         ++result.SpanningCells;
       }
     }
@@ -583,6 +611,20 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
     result.AtlasOffsets.push_back(static_cast<Index>(result.AtlasSites.size()));
   }
   std::vector<std::vector<Index>>().swap(atlas);
+  // No site is nearer a vertex than any of its cells' empty balls reach past
+  // the distance the welding moved it from their centres.
+  result.SiteClearance.assign(nv, std::numeric_limits<double>::infinity());
+  for (std::size_t c = 0; c < nc; ++c)
+  {
+    if (inside[c])
+    {
+      double& clearance = result.SiteClearance[vertexOf[c]];
+      clearance = emptyRadius[c] < 0.0 || clearance < 0.0
+        ? -1.0
+        : std::min(clearance, emptyRadius[c] - Norm(mesh.Centers[vertexOf[c]] - centre[c]));
+    }
+  }
+  std::vector<double>().swap(emptyRadius);
 
   // 4. Edges: Voronoi edges (duals of Delaunay facets) between inside cells.
   for (const auto& [a, b] : adjacentInside)
@@ -765,15 +807,21 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   // 7. What the sampling still got wrong about the solid's topology.
   if (options.RepairTopology)
   {
-    // A surface point lies within CoveringRadius of a site: a point is at
+    // A surface point lies within CoveringRadius of a site: a vertex is at
     // least its distance to the nearest site less that from the surface.
+    // Its clearance bounds that distance without a search where known.
     std::unique_ptr<KdTree> siteTree;
-    std::function<double(const Point3&)> lowerBound;
+    std::function<double(Index)> lowerBound;
     if (options.CoveringRadius > 0.0)
     {
       siteTree = std::make_unique<KdTree>(sites);
-      lowerBound = [&siteTree, &sites, &options](const Point3& p)
-      { return Norm(p - sites[siteTree->Nearest(p)]) - options.CoveringRadius; };
+      lowerBound = [&siteTree, &sites, &options, &result](Index v)
+      {
+        const double clearance = result.SiteClearance[v];
+        const Point3& p = result.Mesh.Centers[v];
+        return (clearance >= 0.0 ? clearance : Norm(p - sites[siteTree->Nearest(p)])) -
+          options.CoveringRadius;
+      };
     }
     const TopologyRepairQueries surfaceQueries{ [&queries](const Point3& p)
       { return queries.Inside(p); },

@@ -54,6 +54,11 @@ struct VoronoiMedialAxisResult
   std::vector<Index> AtlasSites;
   /// Per triangle: the two sites whose Delaunay edge its Voronoi face is dual to.
   std::vector<std::array<Index, 2>> FaceSitePair;
+  /// Per vertex: a lower bound of the distance from its centre to the
+  /// nearest site, from the empty circumspheres of its Delaunay cells; -1
+  /// where unknown (centres moved inside by RepairThinParts, cells too flat
+  /// for their circumcentre to be trusted, vertices added by the repair).
+  std::vector<double> SiteClearance;
 
   // What happened, for reports and tests.
   std::size_t DelaunayCells = 0;

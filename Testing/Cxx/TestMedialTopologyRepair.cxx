@@ -255,7 +255,7 @@ TEST(MedialTopologyRepair, TestsOnlyEdgesTheBallsFreeOfSurfaceLeaveOpen)
     return 1.5 - std::min(Norm(p - Point3{ -2.0, 0.0, 0.0 }), Norm(p - Point3{ 2.0, 0.0, 0.0 }));
   };
   std::size_t tests = 0;
-  const TopologyRepairQueries twoBalls{ [depth](const Point3& p) { return depth(p) > 0.0; }, depth,
+  TopologyRepairQueries twoBalls{ [depth](const Point3& p) { return depth(p) > 0.0; }, depth,
     [&tests, depth](const Point3& a, const Point3& b)
     {
       ++tests;
@@ -268,11 +268,12 @@ TEST(MedialTopologyRepair, TestsOnlyEdgesTheBallsFreeOfSurfaceLeaveOpen)
       }
       return false;
     },
-    depth };
+    {} };
   VoronoiMedialAxisResult result;
   AddDisk(result, 8, 0.5, { -2.0, 0.0, 0.0 });
   AddDisk(result, 8, 0.5, { 2.0, 0.0, 0.0 });
   result.Mesh.Edges = { { 0, 9 } };
+  twoBalls.DistanceLowerBound = [&result, depth](Index v) { return depth(result.Mesh.Centers[v]); };
   const TopologyRepairCounts counts = RepairMedialTopology(result, { 2, 0 }, twoBalls);
   EXPECT_EQ(tests, 1u);
   EXPECT_EQ(counts.EdgesAcrossSurface, 1u);

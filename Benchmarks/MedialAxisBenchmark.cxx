@@ -4,7 +4,8 @@
 //   medialaxis-benchmark [--samples N] [--target V] [--cad] [--threads T] [--scaling]
 //                        [--counts N1,N2,...] [--envelope] [--error-samples S]
 //                        [--envelope-samples E] [--delaunay] [--adaptive|--uniform] [--no-fit]
-//                        [--shape torus|box|...] [--resolution R] [--json FILE] mesh...
+//                        [--shape torus|box|...] [--resolution R] [--subdivide K]
+//                        [--json FILE] mesh...
 //
 // Each run ends with a summary line: the stages, then the pipeline's total
 // (reading the mesh to the simplified MAT, without --envelope's stages) and
@@ -19,7 +20,10 @@
 // exponent of each stage's time, and a table of samples against the run's
 // time and peak memory with the growth exponent of the memory the run adds
 // to the loaded mesh. --resolution sets a --shape's tessellation (torus:
-// 128 R^2 triangles, R = 90 gives about 1M).
+// 128 R^2 triangles, R = 90 gives about 1M). --subdivide K refines each
+// loaded mesh K times by Loop subdivision (4^K times the triangles: the bunny
+// at K = 3 has 1.8M), a "subdivide" stage outside the total, which stands for
+// a scan of that size.
 // --envelope adds, on the simplified MAT: "envelope" (the primitives-mode
 // envelope surface, core), "envelope-vtk" (the same through
 // vtkSlabReconstructor, poly data included) and "error" (reconstruction
@@ -53,6 +57,7 @@
 #include "vtkSurfaceFileReader.h"
 #include "vtkSurfacePreparation.h"
 
+#include "vtkLoopSubdivisionFilter.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 
@@ -113,6 +118,7 @@ Stage Measure(const std::string& name, F&& work)
 }
 
 int ShapeResolution = 0; // 0: each shape's default
+int Subdivisions = 0;    // Loop subdivisions of each loaded mesh
 
 bool LoadSurface(
   const std::string& spec, bool isShape, TriangleMesh& mesh, std::vector<Stage>& stages)
@@ -152,9 +158,17 @@ bool LoadSurface(
     std::cerr << reader->GetErrorMessage() << "\n";
     return false;
   }
+  vtkPolyData* surface = reader->GetOutput();
+  vtkNew<vtkLoopSubdivisionFilter> subdivision;
+  if (Subdivisions > 0)
+  {
+    subdivision->SetInputData(surface);
+    subdivision->SetNumberOfSubdivisions(Subdivisions);
+    stages.push_back(Measure("subdivide", [&] { subdivision->Update(); }));
+    surface = subdivision->GetOutput();
+  }
   SurfacePreparationReport report;
-  stages.push_back(
-    Measure("prepare", [&] { report = PrepareSurfaceMesh(reader->GetOutput(), mesh); }));
+  stages.push_back(Measure("prepare", [&] { report = PrepareSurfaceMesh(surface, mesh); }));
   if (!report.Ok())
   {
     std::cerr << spec << ": " << report.Error << "\n";
@@ -251,6 +265,10 @@ std::vector<Stage> RunPipeline(
     voronoi.Mesh.Centers.size(), voronoi.Mesh.Faces.size(), EdgesNotOnFaces(voronoi.Mesh).size(),
     static_cast<long long>(EulerCharacteristic(voronoi.Mesh)), voronoi.DelaunayCells,
     voronoi.AmbiguousInsideTests);
+  std::printf("  topology repair: %zu spanning cells kept, %zu edges across the surface removed, "
+              "%zu pieces joined, %zu loops cut, %zu loops capped\n",
+    voronoi.SpanningCells, voronoi.EdgesAcrossSurface, voronoi.JoinedPieces, voronoi.CutLoops,
+    voronoi.FilledHoles);
   {
     const MedialMeshQuality q0 = MeasureQuality(voronoi.Mesh);
     std::printf("  initial MAT quality: %zu degenerate, %zu folded triangles (%zu folds); mean min "
@@ -314,7 +332,8 @@ std::vector<Stage> RunPipeline(
 // The pipeline's stages: all but the envelope and error evaluation.
 bool InPipeline(const Stage& s)
 {
-  return s.Name != "envelope" && s.Name != "envelope-vtk" && s.Name != "error";
+  return s.Name != "envelope" && s.Name != "envelope-vtk" && s.Name != "error" &&
+    s.Name != "subdivide";
 }
 
 void PrintStages(const std::string& name, std::size_t triangles, std::size_t samples,
@@ -430,6 +449,8 @@ int main(int argc, char* argv[])
       JsonPath = argv[++i];
     else if (arg == "--resolution" && i + 1 < argc)
       ShapeResolution = std::stoi(argv[++i]);
+    else if (arg == "--subdivide" && i + 1 < argc)
+      Subdivisions = std::clamp(std::stoi(argv[++i]), 0, 5);
     else if (arg == "--counts" && i + 1 < argc)
     {
       counts.clear();
@@ -446,7 +467,8 @@ int main(int argc, char* argv[])
                 << " [--samples N] [--target V] [--cad] [--threads T] [--scaling]"
                    " [--counts N1,N2,...] [--envelope] [--error-samples S]"
                    " [--envelope-samples E] [--delaunay] [--adaptive|--uniform] [--no-fit]"
-                   " [--shape torus|sphere|box] [--resolution R] [--json FILE] mesh...\n";
+                   " [--shape torus|sphere|box] [--resolution R] [--subdivide K]"
+                   " [--json FILE] mesh...\n";
       return 0;
     }
     else

@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 
 using namespace medialaxis;
 
@@ -317,4 +319,76 @@ TEST(MedialTopologyRepair, CapsTwoLoopsThatShareEdges)
   EXPECT_EQ(counts.FilledHoles, 2u);
   EXPECT_EQ(EulerCharacteristic(result.Mesh), 1);
   EXPECT_TRUE(ValidateMedialMesh(result.Mesh).IsValid());
+}
+
+TEST(MedialTopologyRepair, CapsALoopBentRoundAConcavePartInSeveralFans)
+{
+  // A C-shaped slab (radii 4 to 6 round the z axis, angles within 150
+  // degrees of the x axis, |z| < 1) and, inside it, a band of quads whose
+  // two rims follow the C: a spurious loop in a solid of genus 0. No point
+  // sees a whole rim without leaving the slab (segments across the C's
+  // mouth or its inner side leave it), so the rim is capped by fans over the
+  // parts that chords inside the slab split it into.
+  const double degree = 3.14159265358979 / 180.0;
+  auto inside = [degree](const Point3& p)
+  {
+    const double rho = std::hypot(p[0], p[1]);
+    return rho > 4.0 && rho < 6.0 && std::abs(p[2]) < 1.0 &&
+      std::abs(std::atan2(p[1], p[0])) < 150.0 * degree;
+  };
+  std::size_t outside = 0; // cap vertices the test finds outside the slab
+  const TopologyRepairQueries slab{ inside,
+    [](const Point3& p)
+    {
+      const double rho = std::hypot(p[0], p[1]);
+      return std::min({ rho - 4.0, 6.0 - rho, 1.0 - std::abs(p[2]) });
+    },
+    [inside](const Point3& a, const Point3& b)
+    {
+      for (int k = 0; k <= 2000; ++k)
+      {
+        if (!inside(a + (k / 2000.0) * (b - a)))
+        {
+          return true;
+        }
+      }
+      return false;
+    } };
+  std::vector<Point3> path;
+  for (int a = -140; a <= 140; a += 10)
+  {
+    path.push_back({ 4.5 * std::cos(a * degree), 4.5 * std::sin(a * degree), 0.0 });
+  }
+  for (int a = 140; a >= -140; a -= 10)
+  {
+    path.push_back({ 5.5 * std::cos(a * degree), 5.5 * std::sin(a * degree), 0.0 });
+  }
+  VoronoiMedialAxisResult result;
+  std::vector<Index> low, high;
+  for (const Point3& p : path)
+  {
+    low.push_back(AddVertex(result, p + Point3{ 0.0, 0.0, -0.5 }));
+    high.push_back(AddVertex(result, p + Point3{ 0.0, 0.0, 0.5 }));
+  }
+  const std::size_t n = path.size();
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const std::size_t j = (k + 1) % n;
+    AddFace(result, low[k], low[j], high[j]);
+    AddFace(result, low[k], high[j], high[k]);
+  }
+  ASSERT_EQ(EulerCharacteristic(result.Mesh), 0);
+  const std::size_t before = result.Mesh.Centers.size();
+  const TopologyRepairCounts counts = RepairMedialTopology(result, { 1, 0 }, slab);
+  const std::size_t hubs = result.Mesh.Centers.size() - before;
+  for (std::size_t v = before; v < result.Mesh.Centers.size(); ++v)
+  {
+    outside += inside(result.Mesh.Centers[v]) ? 0 : 1;
+  }
+  std::cout << counts.FilledHoles << " loop capped with " << hubs << " fans\n";
+  EXPECT_EQ(counts.FilledHoles, 1u);
+  EXPECT_GT(hubs, 1u);
+  EXPECT_EQ(outside, 0u);
+  EXPECT_EQ(EulerCharacteristic(result.Mesh), 1);
+  EXPECT_TRUE(ValidateMedialMesh(result.Mesh).IsValid()) << ValidateMedialMesh(result.Mesh).Message;
 }

@@ -6,6 +6,7 @@
 #include "Mesh/MedialMesh.h"
 #include "Support/DisjointSets.h"
 #include "Voronoi/CapPeeling.h"
+#include "Voronoi/LoopCaps.h"
 #include "Voronoi/MedialComplexCleanup.h"
 
 #include <tbb/blocked_range.h>
@@ -17,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <queue>
+#include <set>
 #include <tuple>
 
 namespace medialaxis
@@ -27,6 +29,7 @@ using repair::CapPeeler;
 using repair::EdgeKey;
 using repair::FaceIncidence;
 using repair::Key;
+using repair::LoopCap;
 
 std::size_t EdgeId(const std::vector<EdgeKey>& edges, Index a, Index b)
 {
@@ -686,62 +689,10 @@ std::vector<std::vector<Index>> CoreCycles(const MedialMesh& mesh)
   return sorted;
 }
 
-// The hub of a cap over `loop`: a point inside the surface from which every
-// loop vertex is seen without crossing it. The centroid, or failing that
-// (a loop bent round a concave part) the first point a third or two thirds
-// of the way from it to a loop vertex that is. False if none is.
-bool FindHub(const MedialMesh& mesh, const std::vector<Index>& loop,
-  const TopologyRepairQueries& queries, Point3& hub)
-{
-  Point3 centroid{ 0.0, 0.0, 0.0 };
-  for (Index v : loop)
-  {
-    centroid = centroid + mesh.Centers[v];
-  }
-  centroid = (1.0 / static_cast<double>(loop.size())) * centroid;
-  // Candidates that fail mostly fail on the vertex the last one failed on:
-  // it is tested first (the answer does not depend on the order).
-  std::size_t blocker = 0;
-  auto seesAll = [&](const Point3& p)
-  {
-    if (!queries.Inside(p) || queries.Crosses(p, mesh.Centers[loop[blocker]]))
-    {
-      return false;
-    }
-    for (std::size_t k = 0; k < loop.size(); ++k)
-    {
-      if (k != blocker && queries.Crosses(p, mesh.Centers[loop[k]]))
-      {
-        blocker = k;
-        return false;
-      }
-    }
-    return true;
-  };
-  if (seesAll(centroid))
-  {
-    hub = centroid;
-    return true;
-  }
-  for (Index v : loop)
-  {
-    for (double t : { 1.0 / 3.0, 2.0 / 3.0, 0.95 })
-    {
-      const Point3 p = centroid + t * (mesh.Centers[v] - centroid);
-      if (seesAll(p))
-      {
-        hub = p;
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
 // 3. Caps `loops` (closed chains of edges of the complex), in order, where
 // the cap is inside the surface and closes no void, `excess` times at most.
 std::size_t CapLoops(VoronoiMedialAxisResult& result, const std::vector<std::vector<Index>>& loops,
-  long long excess, const TopologyRepairQueries& queries)
+  long long excess, const TopologyRepairQueries& queries, std::set<std::vector<Index>>& uncappable)
 {
   MedialMesh& mesh = result.Mesh;
   std::size_t filled = 0;
@@ -763,9 +714,23 @@ std::size_t CapLoops(VoronoiMedialAxisResult& result, const std::vector<std::vec
     {
       continue;
     }
-    Point3 centre;
-    if (!FindHub(mesh, loop, queries, centre))
+    // Whether a cap fits depends on the loop's vertices and the surface
+    // alone: a loop found uncappable in one round is not searched again.
+    std::vector<Index> canonical = loop;
+    std::rotate(
+      canonical.begin(), std::min_element(canonical.begin(), canonical.end()), canonical.end());
+    if (canonical.size() > 2 && canonical.back() < canonical[1])
     {
+      std::reverse(canonical.begin() + 1, canonical.end());
+    }
+    if (uncappable.count(canonical))
+    {
+      continue;
+    }
+    LoopCap cap;
+    if (!FindCap(mesh, loop, queries, cap))
+    {
+      uncappable.insert(std::move(canonical));
       continue;
     }
     if (!peeler)
@@ -776,10 +741,17 @@ std::size_t CapLoops(VoronoiMedialAxisResult& result, const std::vector<std::vec
     {
       continue;
     }
-    const Index hub = static_cast<Index>(mesh.Centers.size());
-    for (std::size_t k = 0; k < loop.size(); ++k)
+    // (A cap split by chords peels as a fan over the whole loop would: both
+    // are disks on the loop, so the peeler models it as that fan.)
+    for (std::size_t h = 0; h < cap.Hubs.size(); ++h)
     {
-      mesh.Faces.push_back({ hub, loop[k], loop[(k + 1) % loop.size()] });
+      const std::vector<Index>& fan = cap.Fans[h];
+      const Index hub = static_cast<Index>(mesh.Centers.size());
+      for (std::size_t k = 0; k < fan.size(); ++k)
+      {
+        mesh.Faces.push_back({ hub, fan[k], fan[(k + 1) % fan.size()] });
+      }
+      AppendVertex(result, cap.Hubs[h], queries.Distance(cap.Hubs[h]), fan);
     }
     peeler->AddCap(loop); // the complex changed: later peels include the cap
     for (std::size_t k = 0; k < loop.size(); ++k)
@@ -787,7 +759,6 @@ std::size_t CapLoops(VoronoiMedialAxisResult& result, const std::vector<std::vec
       capped.push_back(Key(loop[k], loop[(k + 1) % loop.size()]));
     }
     std::sort(capped.begin(), capped.end());
-    AppendVertex(result, centre, queries.Distance(centre), loop);
     result.FaceSitePair.resize(mesh.Faces.size(), { -1, -1 });
     ++filled;
     --excess;
@@ -863,16 +834,17 @@ TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,
   counts.CutLoops = CutLoops(result.Mesh, excess);
   // Holes in sheets first; then loops of any shape, e.g. round a tube.
   long long left = excess - static_cast<long long>(counts.CutLoops);
+  std::set<std::vector<Index>> uncappable;
   if (left > 0)
   {
-    counts.FilledHoles = CapLoops(result, BoundaryLoops(result.Mesh), left, queries);
+    counts.FilledHoles = CapLoops(result, BoundaryLoops(result.Mesh), left, queries, uncappable);
     left -= static_cast<long long>(counts.FilledHoles);
   }
   // A cycle that shares an edge with one just capped waits for the next
   // round, on the cycles of the complex as the caps left it.
   while (left > 0)
   {
-    const std::size_t filled = CapLoops(result, CoreCycles(result.Mesh), left, queries);
+    const std::size_t filled = CapLoops(result, CoreCycles(result.Mesh), left, queries, uncappable);
     if (filled == 0)
     {
       break;

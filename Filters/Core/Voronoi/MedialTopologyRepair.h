@@ -58,8 +58,11 @@ struct TopologyRepairCounts
 /// 3. then the shortest boundary loops of the sheets, and after them the
 ///    shortest loops of what the complex collapses to (round a tube, say),
 ///    are capped by a fan from their centroid (or a point between it and a
-///    loop vertex), where the fan is inside the surface and closes a loop
-///    rather than a void (its triangles do not survive peeling).
+///    loop vertex), or, where no point sees the whole loop (a loop bent
+///    round a concave part), by fans over the parts that chords inside the
+///    surface split it into (LoopCaps.h), where the cap is inside the surface
+///    and closes a loop rather than a void (its triangles do not survive
+///    peeling).
 /// New vertices' Atlas is the union of their neighbours'; cap triangles get
 /// the site pair {-1, -1}. Deterministic.
 TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,

@@ -2,6 +2,7 @@
 #include "vtkAtlasMedialAxisSimplifier.h"
 
 #include "Simplification/AtlasSimplifier.h"
+#include "Support/Parallel.h"
 #include "vtkMedialMeshConversion.h"
 
 #include "vtkCellArray.h"
@@ -185,8 +186,8 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
     this->UpdateProgress(0.05 + 0.9 * f);
     return !this->GetAbortExecute();
   };
-  const medialaxis::AtlasSimplifierResult result =
-    medialaxis::SimplifyMedialAxis(input, rvd, sites, options);
+  const medialaxis::AtlasSimplifierResult result = medialaxis::RunWithThreads(this->NumberOfThreads,
+    [&] { return medialaxis::SimplifyMedialAxis(input, rvd, sites, options); });
   if (result.Aborted)
   {
     return 1;
@@ -248,6 +249,7 @@ void vtkAtlasMedialAxisSimplifier::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "TargetNumberOfVertices: " << this->TargetNumberOfVertices << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "MaximumCost: " << this->MaximumCost << "\n";
   os << indent << "Lambda: " << this->Lambda << "\n";
   os << indent << "SpikeThreshold: " << this->SpikeThreshold << "\n";

@@ -333,6 +333,13 @@ public:
   vtkBooleanMacro(FitSheetBoundaryRadii, bool);
   ///@}
 
+  ///@{
+  /// Threads to use (0 = all cores, default; or as many as an enclosing
+  /// limit allows). Does not change the result.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
 protected:
   vtkAtlasMedialAxisSimplifier();
   ~vtkAtlasMedialAxisSimplifier() override = default;
@@ -341,6 +348,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   vtkIdType TargetNumberOfVertices = 1000;
+  int NumberOfThreads = 0;
   double MaximumCost = VTK_DOUBLE_MAX;
   double Lambda = 6e-6;
   double SpikeThreshold = 0.025;

@@ -538,6 +538,7 @@ int vtkStructuralMedialAxis::RequestData(
   simplifier->SetInputConnection(0, voronoi->GetOutputPort());
   simplifier->SetInputConnection(1, rvd->GetOutputPort(0));
   simplifier->SetTargetNumberOfVertices(this->TargetNumberOfVertices);
+  simplifier->SetNumberOfThreads(this->NumberOfThreads);
   simplifier->SetPreserveSharpFeatures(this->PreserveSharpFeatures);
   simplifier->SetFringeCollapses(this->FringeCollapses);
   simplifier->SetErrorBands(this->ErrorBands);

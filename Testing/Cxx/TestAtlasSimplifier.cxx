@@ -23,6 +23,7 @@
 #include "vtkVoronoiMedialAxis.h"
 
 #include "TestHelpers.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -32,6 +33,7 @@
 #include "vtkPolyData.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -528,6 +530,64 @@ TEST(AtlasMedialAxisSimplifierFilter, PipelineAndCorrespondence)
   ids->GetRange(range);
   EXPECT_GE(range[0], 0.0);
   EXPECT_LT(range[1], 200.0);
+}
+
+TEST(AtlasMedialAxisSimplifierFilter, KeepsToItsThreadsAndGivesTheSameResultOnAny)
+{
+  // A stage's own "every core" (0) stays within an enclosing limit: the final
+  // fit's searches ran on every core even when the pipeline was given one.
+  EXPECT_EQ(
+    RunWithThreads(
+      1, [] { return RunWithThreads(0, [] { return tbb::this_task_arena::max_concurrency(); }); }),
+    1);
+  vtkNew<vtkAnalyticShapeSource> shape;
+  shape->SetShapeToTorus();
+  shape->SetResolution(16);
+  test::InitialMedialPipeline pipeline(shape->GetOutputPort(), 3000);
+  std::vector<std::vector<double>> results;
+  for (int threads : { 1, 2 })
+  {
+    vtkNew<vtkAtlasMedialAxisSimplifier> simplifier;
+    simplifier->SetInputConnection(0, pipeline.Voronoi->GetOutputPort());
+    simplifier->SetInputConnection(1, pipeline.Rvd->GetOutputPort(0));
+    simplifier->SetTargetNumberOfVertices(200);
+    simplifier->SetNumberOfThreads(threads);
+    EXPECT_EQ(simplifier->GetNumberOfThreads(), threads);
+    // The progress reports come from inside the simplification: the threads
+    // it may use there.
+    int widest = 0;
+    vtkNew<vtkCallbackCommand> observer;
+    observer->SetClientData(&widest);
+    observer->SetCallback(
+      [](vtkObject*, unsigned long, void* widestThreads, void* progress)
+      {
+        // (Reports of 0 and 1 come from the pipeline, before and after.)
+        const double f = *static_cast<double*>(progress);
+        if (f > 0.0 && f < 1.0)
+        {
+          int& w = *static_cast<int*>(widestThreads);
+          w = std::max(w, tbb::this_task_arena::max_concurrency());
+        }
+      });
+    simplifier->AddObserver(vtkCommand::ProgressEvent, observer);
+    simplifier->Update();
+    if (threads == 1)
+    {
+      EXPECT_EQ(widest, 1);
+    }
+    vtkPolyData* mat = simplifier->GetOutput();
+    ASSERT_EQ(mat->GetNumberOfPoints(), 200);
+    std::vector<double> values;
+    for (vtkIdType i = 0; i < mat->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      mat->GetPoint(i, x);
+      values.insert(values.end(), x, x + 3);
+      values.push_back(mat->GetPointData()->GetArray("Radius")->GetComponent(i, 0));
+    }
+    results.push_back(values);
+  }
+  EXPECT_EQ(results[0], results[1]);
 }
 
 TEST(AtlasMedialAxisSimplifierFilter, BadInputsGiveClearErrors)

@@ -8,11 +8,17 @@
 
 namespace medialaxis
 {
-/// threads <= 0 uses every available core.
+/// threads <= 0 runs `f` where it is called: on every core, or on as many as
+/// an enclosing RunWithThreads allows (a stage's own "all cores" must not
+/// escape the limit of the pipeline that runs it).
 template <typename Function>
 auto RunWithThreads(int threads, Function&& f) -> decltype(f())
 {
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  if (threads <= 0)
+  {
+    return f();
+  }
+  tbb::task_arena arena(threads);
   return arena.execute(f);
 }
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Voronoi/CapPeeling.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace medialaxis
@@ -150,47 +151,67 @@ bool CapPeeler::BoundsSmallPatch(const std::vector<Index>& loop) const
   for (std::size_t k = 0; k < loop.size(); ++k)
   {
     rim.push_back(this->Incidence.Id(loop[k], loop[(k + 1) % loop.size()]));
-    if (this->Incidence.FaceCount[rim.back()] != 1)
+    const int count = this->Incidence.FaceCount[rim.back()];
+    if (count != 1 && count != 2)
     {
       return false;
     }
   }
+  const std::size_t first = rim[0];
   std::sort(rim.begin(), rim.end());
-  std::vector<Index> patch{ this->Incidence.EdgeFaces[this->Incidence.Start[rim[0]]] };
-  for (std::size_t k = 0; k < patch.size(); ++k)
+  // The patch on each side of the loop's first edge (a rim edge of a sheet
+  // has one side): grown across edges on exactly two triangles, never across
+  // the loop, it must close up with every loop edge on exactly one of its
+  // triangles. With the cap it then makes a closed surface, which no peeling
+  // removes.
+  std::vector<Index> patch;
+  for (std::size_t side = this->Incidence.Start[first]; side < this->Incidence.Start[first + 1];
+       ++side)
   {
-    for (std::size_t e : this->Incidence.FaceEdges[patch[k]])
+    patch.assign(1, this->Incidence.EdgeFaces[side]);
+    bool closed = true;
+    for (std::size_t k = 0; closed && k < patch.size(); ++k)
     {
-      if (std::binary_search(rim.begin(), rim.end(), e))
+      for (std::size_t e : this->Incidence.FaceEdges[patch[k]])
       {
-        continue;
-      }
-      if (this->Incidence.FaceCount[e] != 2)
-      {
-        return false;
-      }
-      for (std::size_t i = this->Incidence.Start[e]; i < this->Incidence.Start[e + 1]; ++i)
-      {
-        const Index f = this->Incidence.EdgeFaces[i];
-        if (std::find(patch.begin(), patch.end(), f) == patch.end())
+        if (std::binary_search(rim.begin(), rim.end(), e))
         {
-          if (patch.size() == limit)
+          continue;
+        }
+        if (this->Incidence.FaceCount[e] != 2 || patch.size() > limit)
+        {
+          closed = false;
+          break;
+        }
+        for (std::size_t i = this->Incidence.Start[e]; i < this->Incidence.Start[e + 1]; ++i)
+        {
+          const Index f = this->Incidence.EdgeFaces[i];
+          if (std::find(patch.begin(), patch.end(), f) == patch.end())
           {
-            return false;
+            patch.push_back(f);
           }
-          patch.push_back(f);
         }
       }
     }
-  }
-  // Closed up: every rim edge must be on the patch, or the loop bounds
-  // more than one patch and is not that simple.
-  return std::all_of(rim.begin(), rim.end(),
-    [&](std::size_t e)
+    closed = closed && patch.size() <= limit &&
+      std::all_of(rim.begin(), rim.end(),
+        [&](std::size_t e)
+        {
+          int on = 0;
+          for (std::size_t i = this->Incidence.Start[e]; i < this->Incidence.Start[e + 1]; ++i)
+          {
+            on += std::find(patch.begin(), patch.end(), this->Incidence.EdgeFaces[i]) != patch.end()
+              ? 1
+              : 0;
+          }
+          return on == 1;
+        });
+    if (closed)
     {
-      return std::find(patch.begin(), patch.end(),
-               this->Incidence.EdgeFaces[this->Incidence.Start[e]]) != patch.end();
-    });
+      return true;
+    }
+  }
+  return false;
 }
 }
 }

@@ -71,9 +71,10 @@ public:
   bool CapClosesVoid(const std::vector<Index>& loop) const;
 
 private:
-  // The quick answer for most loops that are not holes: the rim of a small
-  // flap, a patch of triangles (joined across edges on exactly two) whose
-  // only free edges are the loop's. False when unsure.
+  // The quick answer for most loops that are not holes: the loop bounds a
+  // small patch of triangles (joined across edges on exactly two, the loop's
+  // edges each on one of them), a flap whose rim it is or a disk cut out of
+  // a sheet, which with the cap makes a closed surface. False when unsure.
   bool BoundsSmallPatch(const std::vector<Index>& loop) const;
 
   FaceIncidence Incidence;

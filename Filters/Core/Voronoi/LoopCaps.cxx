@@ -4,7 +4,6 @@
 #include "Geometry/Vec3.h"
 
 #include <cstddef>
-#include <utility>
 
 namespace medialaxis
 {

@@ -241,6 +241,19 @@ long long EulerCharacteristic(const MedialMesh& mesh)
     static_cast<long long>(AllEdges(mesh).size()) + static_cast<long long>(mesh.Faces.size());
 }
 
+void CanonicalCycle(std::vector<Index>& cycle)
+{
+  if (cycle.empty())
+  {
+    return;
+  }
+  std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
+  if (cycle.size() > 2 && cycle.back() < cycle[1])
+  {
+    std::reverse(cycle.begin() + 1, cycle.end());
+  }
+}
+
 std::vector<Index> IsolatedVertices(const MedialMesh& mesh)
 {
   std::vector<char> used(mesh.Centers.size(), 0);

@@ -57,6 +57,11 @@ long long EulerCharacteristic(const MedialMesh& mesh);
 
 /// Ids of vertices referenced by no edge and no face.
 std::vector<Index> IsolatedVertices(const MedialMesh& mesh);
+
+/// Rewrites a closed chain of vertex ids in one form whichever vertex and
+/// direction it was given from: starting at its smallest id, towards the
+/// smaller of that id's two neighbours.
+void CanonicalCycle(std::vector<Index>& cycle);
 }
 
 #endif

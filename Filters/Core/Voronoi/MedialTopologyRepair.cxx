@@ -717,12 +717,7 @@ std::size_t CapLoops(VoronoiMedialAxisResult& result, const std::vector<std::vec
     // Whether a cap fits depends on the loop's vertices and the surface
     // alone: a loop found uncappable in one round is not searched again.
     std::vector<Index> canonical = loop;
-    std::rotate(
-      canonical.begin(), std::min_element(canonical.begin(), canonical.end()), canonical.end());
-    if (canonical.size() > 2 && canonical.back() < canonical[1])
-    {
-      std::reverse(canonical.begin() + 1, canonical.end());
-    }
+    CanonicalCycle(canonical);
     if (uncappable.count(canonical))
     {
       continue;

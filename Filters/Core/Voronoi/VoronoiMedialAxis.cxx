@@ -720,12 +720,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       {
         continue; // collapsed by welding
       }
-      // Canonical cycle: start at the smallest id, towards its smaller neighbour.
-      std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end()), polygon.end());
-      if (polygon.back() < polygon[1])
-      {
-        std::reverse(polygon.begin() + 1, polygon.end());
-      }
+      CanonicalCycle(polygon); // the output order must not depend on CGAL's
       const std::array<Index, 2> key{ std::min(u, v), std::max(u, v) };
       if (std::binary_search(voidFaces.begin(), voidFaces.end(), key))
       {

@@ -2,10 +2,12 @@
 // The topology repair of the initial medial mesh on small hand-built
 // complexes whose defects are known: a tube (one spurious loop round a
 // hole), a loop of face-less edges, a piece cut off, an edge bridging two
-// solids, and a sheet whose rim must not be capped into a closed bubble.
+// solids, and a sheet whose rim must not be capped into a closed bubble;
+// and the peeling that tells whether a cap closes a void.
 #include "Geometry/Vec3.h"
 #include "Mesh/MedialMesh.h"
 #include "Surface/AnalyticShapes.h"
+#include "Voronoi/CapPeeling.h"
 #include "Voronoi/MedialTopologyRepair.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 
 using namespace medialaxis;
 
@@ -391,4 +394,143 @@ TEST(MedialTopologyRepair, CapsALoopBentRoundAConcavePartInSeveralFans)
   EXPECT_EQ(outside, 0u);
   EXPECT_EQ(EulerCharacteristic(result.Mesh), 1);
   EXPECT_TRUE(ValidateMedialMesh(result.Mesh).IsValid()) << ValidateMedialMesh(result.Mesh).Message;
+}
+
+namespace
+{
+// Whether any of the triangles from `first` on survives peeling `faces`
+// (removing, until none is left, every triangle with an edge on no other
+// live triangle), by the definition: the reference for CapPeeler.
+bool SurvivesPeelingFromScratch(const std::vector<std::array<Index, 3>>& faces, std::size_t first)
+{
+  std::vector<char> alive(faces.size(), 1);
+  for (bool removed = true; removed;)
+  {
+    removed = false;
+    std::map<std::pair<Index, Index>, int> count;
+    for (std::size_t f = 0; f < faces.size(); ++f)
+    {
+      for (int k = 0; alive[f] && k < 3; ++k)
+      {
+        ++count[std::minmax(faces[f][k], faces[f][(k + 1) % 3])];
+      }
+    }
+    for (std::size_t f = 0; f < faces.size(); ++f)
+    {
+      for (int k = 0; alive[f] && k < 3; ++k)
+      {
+        if (count[std::minmax(faces[f][k], faces[f][(k + 1) % 3])] == 1)
+        {
+          alive[f] = 0;
+          removed = true;
+        }
+      }
+    }
+  }
+  return std::any_of(
+    alive.begin() + static_cast<std::ptrdiff_t>(first), alive.end(), [](char a) { return a != 0; });
+}
+}
+
+TEST(CapPeeling, AgreesWithPeelingTheCappedComplexFromScratch)
+{
+  // The surface of a 4 x 4 x 8 box in unit squares with three windows (in
+  // its top, its bottom and one side high up) and loops round it: rings at
+  // heights 1, 2 and 3 and the windows' rims. Capped one after the other
+  // where the cap closes no void, each answer depends on the caps before.
+  constexpr int width = 4, height = 8;
+  MedialMesh mesh;
+  std::map<std::array<int, 3>, Index> id;
+  auto vertex = [&](int x, int y, int z)
+  {
+    const auto [it, added] = id.emplace(std::array<int, 3>{ x, y, z }, 0);
+    if (added)
+    {
+      it->second = static_cast<Index>(mesh.Centers.size());
+      mesh.Centers.push_back({ double(x), double(y), double(z) });
+      mesh.Radii.push_back(0.1);
+    }
+    return it->second;
+  };
+  auto quad = [&](Index a, Index b, Index c, Index d)
+  {
+    mesh.Faces.push_back({ a, b, c });
+    mesh.Faces.push_back({ a, c, d });
+  };
+  auto window = [](int u, int v, int lo, int hi) { return u >= lo && u < hi && v >= lo && v < hi; };
+  for (int u = 0; u < width; ++u)
+  {
+    for (int v = 0; v < width; ++v)
+    {
+      if (!window(u, v, 1, 3)) // top and bottom, each with a 2 x 2 window
+      {
+        quad(vertex(u, v, height), vertex(u + 1, v, height), vertex(u + 1, v + 1, height),
+          vertex(u, v + 1, height));
+        quad(vertex(u, v, 0), vertex(u, v + 1, 0), vertex(u + 1, v + 1, 0), vertex(u + 1, v, 0));
+      }
+    }
+  }
+  for (int z = 0; z < height; ++z)
+  {
+    for (int u = 0; u < width; ++u)
+    {
+      quad(vertex(u, 0, z), vertex(u + 1, 0, z), vertex(u + 1, 0, z + 1), vertex(u, 0, z + 1));
+      quad(vertex(u, width, z), vertex(u, width, z + 1), vertex(u + 1, width, z + 1),
+        vertex(u + 1, width, z));
+      quad(vertex(width, u, z), vertex(width, u + 1, z), vertex(width, u + 1, z + 1),
+        vertex(width, u, z + 1));
+      if (!(u >= 1 && u < 3 && z >= 5 && z < 7)) // the side window, on x = 0
+      {
+        quad(vertex(0, u, z), vertex(0, u, z + 1), vertex(0, u + 1, z + 1), vertex(0, u + 1, z));
+      }
+    }
+  }
+  // A square ring, counter-clockwise: `square(t)` walks its perimeter.
+  auto ring = [&](int lo, int hi, auto&& square)
+  {
+    std::vector<Index> loop;
+    for (int t = lo; t < hi; ++t)
+      loop.push_back(square(t, lo));
+    for (int t = lo; t < hi; ++t)
+      loop.push_back(square(hi, t));
+    for (int t = hi; t > lo; --t)
+      loop.push_back(square(t, hi));
+    for (int t = hi; t > lo; --t)
+      loop.push_back(square(lo, t));
+    return loop;
+  };
+  auto atHeight = [&](int z)
+  { return ring(0, width, [&, z](int x, int y) { return vertex(x, y, z); }); };
+  const std::vector<Index> top = ring(1, 3, [&](int x, int y) { return vertex(x, y, height); });
+  const std::vector<Index> bottom = ring(1, 3, [&](int x, int y) { return vertex(x, y, 0); });
+  const std::vector<Index> side = ring(1, 3, [&](int y, int z) { return vertex(0, y, z + 4); });
+  const std::size_t nv = mesh.Centers.size();
+
+  repair::CapPeeler peeler(mesh);
+  EXPECT_TRUE(peeler.PeelsAway());
+  std::vector<std::array<Index, 3>> complex = mesh.Faces; // with the caps made
+  Index hub = static_cast<Index>(nv);
+  std::vector<int> answers;
+  for (const std::vector<Index>& loop :
+    { top, atHeight(2), bottom, atHeight(1), side, atHeight(3) })
+  {
+    std::vector<std::array<Index, 3>> capped = complex;
+    for (std::size_t k = 0; k < loop.size(); ++k)
+    {
+      capped.push_back({ hub, loop[k], loop[(k + 1) % loop.size()] });
+    }
+    const bool closes = SurvivesPeelingFromScratch(capped, complex.size());
+    EXPECT_EQ(peeler.CapClosesVoid(loop), closes) << "loop " << answers.size();
+    answers.push_back(closes ? 1 : 0);
+    if (!closes)
+    {
+      peeler.AddCap(loop);
+      complex = capped;
+      ++hub;
+    }
+  }
+  // The top, then the ring at height 2 (the side window still open):
+  // nothing closed; every later cap closes a void with those two.
+  EXPECT_EQ(answers, (std::vector<int>{ 0, 0, 1, 1, 1, 1 }));
+  EXPECT_TRUE(peeler.PeelsAway()); // the side window is still open
 }

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace medialaxis
@@ -50,35 +51,69 @@ struct FaceIncidence
 // Whether a cap would close a void: peeling (removing, until none is left,
 // every triangle with an edge on no other live triangle) leaves exactly the
 // triangles of the complex's closed surfaces and of what they pin down, so a
-// cap that survives it closes one. The complex's incidences are built once;
-// caps made since (AddCap) join each peel as fans of their own, and each
-// candidate cap is peeled with them from scratch, as peeling is not
-// incremental.
+// cap that survives it closes one.
+//
+// Peeling ends in the same place whatever the order, so the complex is
+// peeled once, remembering for each removed triangle when it went and the
+// edge that was free then (its witness). A cap can only hold back the
+// triangles whose removal depends, through witnesses, on an edge of its
+// loop; a query peels those and the cap's fan again, on top of what
+// survived the first peeling, instead of the whole complex. Caps made
+// (AddCap) join the complex as fans from a new vertex.
 class CapPeeler
 {
 public:
-  explicit CapPeeler(const MedialMesh& mesh)
-    : Incidence(mesh)
-  {
-  }
-
-  /// A cap made over `loop` (a fan from a new vertex): later peels include
-  /// it, as a rebuilt peeler would.
-  void AddCap(const std::vector<Index>& loop) { this->Caps.push_back(loop); }
+  explicit CapPeeler(const MedialMesh& mesh);
 
   /// True when the fan from a new vertex over the closed `loop` (of edges
   /// of the complex) would survive peeling.
   bool CapClosesVoid(const std::vector<Index>& loop) const;
 
+  /// A cap made over `loop` (a fan from a new vertex): later queries
+  /// include it, as a peeler built on the capped complex would.
+  void AddCap(const std::vector<Index>& loop);
+
+  /// The complex's edges and incidences.
+  const FaceIncidence& Complex() const { return this->Incidence; }
+
+  /// Whether peeling removed every triangle of the complex (caps included).
+  bool PeelsAway() const;
+
+  /// Per edge of the complex, 1 unless it was the witness of a removed
+  /// triangle: with the peeling, an elementary collapse of the complex,
+  /// whose edges left are a graph when it peels away.
+  std::vector<char> EdgesLeft() const;
+
 private:
+  static constexpr std::size_t Survived = static_cast<std::size_t>(-1);
+
   // The quick answer for most loops that are not holes: the loop bounds a
   // small patch of triangles (joined across edges on exactly two, the loop's
   // edges each on one of them), a flap whose rim it is or a disk cut out of
   // a sheet, which with the cap makes a closed surface. False when unsure.
   bool BoundsSmallPatch(const std::vector<Index>& loop) const;
 
+  // The peeling again of the triangles that depend on the loop's edges,
+  // with the fan over it added; how they went (or that they survived) in
+  // `order`, removal order, and `survivors`. True when a fan face survived.
+  bool PeelWithFan(const std::vector<Index>& loop, std::vector<std::size_t>& order,
+    std::vector<std::size_t>& survivors, std::vector<std::size_t>& witnesses) const;
+
+  const std::array<std::size_t, 3>& EdgesOf(std::size_t face) const;
+  template <typename F>
+  void ForEachFaceOn(std::size_t edge, F&& visit) const;
+
   FaceIncidence Incidence;
-  std::vector<std::vector<Index>> Caps; // made since the incidences were built
+  // Fans of the caps made: faces nf + i, spokes (edges) ne + j.
+  std::vector<std::array<std::size_t, 3>> FanEdges;
+  std::vector<std::pair<std::size_t, std::size_t>> FansOnEdge; // sorted (edge, fan face)
+  std::vector<std::array<std::size_t, 2>> SpokeFaces;
+  // The peeling: per triangle, its place in the removal order (Survived
+  // for the triangles left) and its witness; per edge, the survivors on it.
+  std::vector<std::size_t> RemovedAt;
+  std::vector<std::size_t> Witness;
+  std::vector<int> SurvivorsOn;
+  std::size_t Removals = 0;
 };
 }
 }

@@ -27,7 +27,6 @@ namespace
 {
 using repair::CapPeeler;
 using repair::EdgeKey;
-using repair::FaceIncidence;
 using repair::Key;
 using repair::LoopCap;
 
@@ -533,61 +532,19 @@ std::vector<std::vector<Index>> BoundaryLoops(const MedialMesh& mesh)
 }
 
 // The complex collapsed to a graph: triangles go with a free edge of theirs
-// (an elementary collapse), then edges with a free end. Its cycles are the
-// complex's independent loops; for each edge left out of a spanning tree of
-// it, the shortest cycle through that edge, shortest first. Empty when the
-// complex does not collapse to a graph.
-std::vector<std::vector<Index>> CoreCycles(const MedialMesh& mesh)
+// (an elementary collapse: the peeling's witness), then edges with a free
+// end. Its cycles are the complex's independent loops; for each edge left
+// out of a spanning tree of it, the shortest cycle through that edge,
+// shortest first. Empty when the complex does not collapse to a graph.
+std::vector<std::vector<Index>> CoreCycles(const MedialMesh& mesh, const CapPeeler& peeling)
 {
-  const FaceIncidence incidence(mesh);
-  const std::vector<EdgeKey>& edges = incidence.Edges;
-  const auto& faceEdges = incidence.FaceEdges;
-  const auto& start = incidence.Start;
-  const auto& edgeFaces = incidence.EdgeFaces;
-  const std::size_t nf = mesh.Faces.size(), ne = edges.size(), nv = mesh.Centers.size();
-  std::vector<int> count(incidence.FaceCount);
-  std::vector<char> faceAlive(nf, 1), edgeAlive(ne, 1);
-  std::vector<Index> stack(nf);
-  for (std::size_t f = 0; f < nf; ++f)
-  {
-    stack[f] = static_cast<Index>(nf - 1 - f);
-  }
-  std::size_t facesLeft = nf;
-  while (!stack.empty())
-  {
-    const Index f = stack.back();
-    stack.pop_back();
-    if (!faceAlive[f])
-    {
-      continue;
-    }
-    const auto freeEdge = std::find_if(
-      faceEdges[f].begin(), faceEdges[f].end(), [&](std::size_t e) { return count[e] == 1; });
-    if (freeEdge == faceEdges[f].end())
-    {
-      continue;
-    }
-    faceAlive[f] = 0;
-    edgeAlive[*freeEdge] = 0;
-    --facesLeft;
-    for (std::size_t e : faceEdges[f])
-    {
-      if (--count[e] == 1)
-      {
-        for (std::size_t i = start[e]; i < start[e + 1]; ++i)
-        {
-          if (faceAlive[edgeFaces[i]])
-          {
-            stack.push_back(edgeFaces[i]);
-          }
-        }
-      }
-    }
-  }
-  if (facesLeft > 0)
+  if (!peeling.PeelsAway())
   {
     return {}; // a closed surface (or a dunce hat): not a graph
   }
+  const std::vector<EdgeKey>& edges = peeling.Complex().Edges;
+  const std::size_t ne = edges.size(), nv = mesh.Centers.size();
+  std::vector<char> edgeAlive = peeling.EdgesLeft();
   // Prune free ends.
   std::vector<int> degree(nv, 0);
   std::vector<std::vector<std::size_t>> around(nv);
@@ -692,12 +649,12 @@ std::vector<std::vector<Index>> CoreCycles(const MedialMesh& mesh)
 // 3. Caps `loops` (closed chains of edges of the complex), in order, where
 // the cap is inside the surface and closes no void, `excess` times at most.
 std::size_t CapLoops(VoronoiMedialAxisResult& result, const std::vector<std::vector<Index>>& loops,
-  long long excess, const TopologyRepairQueries& queries, std::set<std::vector<Index>>& uncappable)
+  long long excess, const TopologyRepairQueries& queries, std::set<std::vector<Index>>& uncappable,
+  std::unique_ptr<CapPeeler> peeler)
 {
   MedialMesh& mesh = result.Mesh;
   std::size_t filled = 0;
-  std::unique_ptr<CapPeeler> peeler; // built on the first cap that needs it
-  std::vector<EdgeKey> capped;       // edges of caps so far, sorted
+  std::vector<EdgeKey> capped; // edges of caps so far, sorted
   for (const std::vector<Index>& loop : loops)
   {
     if (excess <= 0)
@@ -832,14 +789,19 @@ TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,
   std::set<std::vector<Index>> uncappable;
   if (left > 0)
   {
-    counts.FilledHoles = CapLoops(result, BoundaryLoops(result.Mesh), left, queries, uncappable);
+    // (The peeling is built on the first cap that needs it.)
+    counts.FilledHoles =
+      CapLoops(result, BoundaryLoops(result.Mesh), left, queries, uncappable, nullptr);
     left -= static_cast<long long>(counts.FilledHoles);
   }
   // A cycle that shares an edge with one just capped waits for the next
   // round, on the cycles of the complex as the caps left it.
   while (left > 0)
   {
-    const std::size_t filled = CapLoops(result, CoreCycles(result.Mesh), left, queries, uncappable);
+    auto peeling = std::make_unique<CapPeeler>(result.Mesh);
+    const std::vector<std::vector<Index>> cycles = CoreCycles(result.Mesh, *peeling);
+    const std::size_t filled =
+      CapLoops(result, cycles, left, queries, uncappable, std::move(peeling));
     if (filled == 0)
     {
       break;

@@ -224,11 +224,20 @@ struct EdgeGraph
   std::vector<double> Length;
 
   EdgeGraph(const MedialMesh& mesh, std::vector<EdgeKey> edges)
-    : Edges(std::move(edges))
-    , Start(mesh.Centers.size() + 1, 0)
-    , Length(this->Edges.size())
+    : EdgeGraph(mesh.Centers.size(), std::move(edges))
   {
-    const std::size_t nv = mesh.Centers.size();
+    for (std::size_t e = 0; e < this->Edges.size(); ++e)
+    {
+      this->Length[e] = Norm(mesh.Centers[this->Edges[e][0]] - mesh.Centers[this->Edges[e][1]]);
+    }
+  }
+
+  // Vertices 0 .. nv - 1 and their edges, lengths 0.
+  EdgeGraph(std::size_t nv, std::vector<EdgeKey> edges)
+    : Edges(std::move(edges))
+    , Start(nv + 1, 0)
+    , Length(this->Edges.size(), 0.0)
+  {
     for (const EdgeKey& e : this->Edges)
     {
       ++this->Start[e[0] + 1];
@@ -244,7 +253,6 @@ struct EdgeGraph
     {
       this->AdjacentEdge[cursor[this->Edges[e][0]]++] = static_cast<Index>(e);
       this->AdjacentEdge[cursor[this->Edges[e][1]]++] = static_cast<Index>(e);
-      this->Length[e] = Norm(mesh.Centers[this->Edges[e][0]] - mesh.Centers[this->Edges[e][1]]);
     }
   }
 
@@ -381,6 +389,44 @@ std::vector<char> Bridges(const EdgeGraph& graph)
   return bridge;
 }
 
+// Whether no face-less edge lies on a loop. Faces tie their vertices
+// together, so a line is a bridge of the complex's edges exactly when it is
+// one of the lines between the pieces that faces join: a search over the
+// lines alone instead of every edge of the complex.
+bool EveryLineIsABridge(const MedialMesh& mesh, const std::vector<EdgeKey>& lines)
+{
+  DisjointSets joined(mesh.Centers.size());
+  for (const auto& t : mesh.Faces)
+  {
+    joined.Union(t[0], t[1]);
+    joined.Union(t[0], t[2]);
+  }
+  std::vector<Index> piece; // the pieces the lines join, numbered from 0
+  std::vector<EdgeKey> between;
+  for (const EdgeKey& line : lines)
+  {
+    const Index a = joined.Find(line[0]), b = joined.Find(line[1]);
+    if (a == b)
+    {
+      return false; // a path through faces goes round it
+    }
+    piece.push_back(a);
+    piece.push_back(b);
+    between.push_back({ a, b });
+  }
+  std::sort(piece.begin(), piece.end());
+  piece.erase(std::unique(piece.begin(), piece.end()), piece.end());
+  for (EdgeKey& e : between)
+  {
+    for (Index& v : e)
+    {
+      v = static_cast<Index>(std::lower_bound(piece.begin(), piece.end(), v) - piece.begin());
+    }
+  }
+  const std::vector<char> bridge = Bridges(EdgeGraph(piece.size(), std::move(between)));
+  return std::all_of(bridge.begin(), bridge.end(), [](char b) { return b != 0; });
+}
+
 // 2. Removes the face-less edge on the shortest loop, `excess` times at most.
 std::size_t CutLoops(MedialMesh& mesh, long long excess)
 {
@@ -390,7 +436,7 @@ std::size_t CutLoops(MedialMesh& mesh, long long excess)
   for (; excess > 0; --excess)
   {
     const std::vector<EdgeKey> lines = EdgesNotOnFaces(mesh);
-    if (lines.empty())
+    if (lines.empty() || EveryLineIsABridge(mesh, lines))
     {
       break;
     }

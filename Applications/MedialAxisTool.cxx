@@ -735,9 +735,19 @@ int main(int argc, char** argv)
   vtkPolyData* surface = validator->GetOutput();
   if (validator->GetRepaired() && !o.Quiet)
   {
-    std::cout << "  repaired: " << validator->GetNumberOfCrossingPairs()
-              << " pairs of crossing triangles resolved into the outer boundary, area "
-              << validator->GetRemovedArea() << " inside removed\n";
+    if (validator->GetWrapped())
+    {
+      std::cout << "  repaired: " << validator->GetNumberOfCrossingPairs()
+                << " pairs of crossing triangles could not be resolved exactly; the surface was "
+                   "wrapped instead, within "
+                << 100.0 * validator->GetRepairDeviation() << "% of the diagonal of the input\n";
+    }
+    else
+    {
+      std::cout << "  repaired: " << validator->GetNumberOfCrossingPairs()
+                << " pairs of crossing triangles resolved into the outer boundary, area "
+                << validator->GetRemovedArea() << " inside removed\n";
+    }
   }
   medialaxis::SharpEdgeContent sharpEdges;
   if (o.AutomaticPreset)
@@ -1047,7 +1057,11 @@ int main(int argc, char** argv)
          << ", \"volume\": " << FieldValue(surface, "Volume") << "}"
          << ",\n  \"repair\": {\"repaired\": " << (validator->GetRepaired() ? "true" : "false")
          << ", \"crossing_pairs\": " << validator->GetNumberOfCrossingPairs()
-         << ", \"removed_area\": " << validator->GetRemovedArea() << "}"
+         << ", \"removed_area\": " << validator->GetRemovedArea() << ", \"method\": "
+         << (!validator->GetRepaired()    ? "null"
+                : validator->GetWrapped() ? "\"alpha wrap\""
+                                          : "\"resolved crossings\"")
+         << ", \"deviation\": " << validator->GetRepairDeviation() << "}"
          << ",\n  \"preset\": " << (o.Cad ? "\"cad\"" : "\"organic\"")
          << ", \"preset_chosen\": " << (o.AutomaticPreset ? "\"auto\"" : "\"given\"");
     if (o.AutomaticPreset)

@@ -4,7 +4,9 @@ for each generated case (two overlapping boxes exported as one surface, a
 ball pushed through a plate, a tube along a figure-eight crossing itself),
 the shared meshes with crossing triangles (block.off, octopus.off: local
 folds) and a spindle torus (its tube crosses itself around the axis),
-print the crossing pairs, the repair's time and removed area, the medial
+print the crossing pairs, the repair's time and removed area (or, where the
+crossings cannot be resolved exactly, that the surface was wrapped and how
+far the wrap lies from the input), the medial
 axis's Euler characteristic against the solid's (1 - genus), its two-sided
 Hausdorff distance to the repaired surface and the sphere centres outside
 the repaired solid.
@@ -89,6 +91,8 @@ for name, make, euler in cases:
     area = validator.GetArea() + validator.GetRemovedArea()
     print("| %s | %d | %d | %s | %.2f | %.1f%% | %d (%d) | %.2f | %d of %d | %.1f |" % (
         name, surface.GetNumberOfCells(), validator.GetNumberOfCrossingPairs(),
-        "yes" if validator.GetRepaired() else "no (local folds kept)", repair_seconds,
+        ("wrapped, within %.2f%%" % (100.0 * validator.GetRepairDeviation())
+         if validator.GetWrapped() else
+         "yes" if validator.GetRepaired() else "no (local folds kept)"), repair_seconds,
         100.0 * validator.GetRemovedArea() / area, repair_shapes.euler_characteristic(mat), euler,
         hausdorff, int((inside == 0).sum()), len(inside), medial_seconds), flush=True)

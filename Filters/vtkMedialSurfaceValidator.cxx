@@ -38,6 +38,7 @@ int vtkMedialSurfaceValidator::RequestData(
   options.RelativeMergeTolerance = this->RelativeMergeTolerance;
   options.FixOrientation = this->FixOrientation;
   options.RepairSelfIntersections = this->RepairSelfIntersections;
+  options.WrapAlpha = this->WrapAlpha;
   const auto report = medialaxis::PrepareSurfacePolyData(input, output, options);
   this->UpdateProgress(1.0);
 
@@ -61,6 +62,8 @@ int vtkMedialSurfaceValidator::RequestData(
   this->Volume = report.Volume;
   this->Repaired = report.Repaired;
   this->RemovedArea = report.RemovedArea;
+  this->Wrapped = report.RepairMethod == "alpha wrap";
+  this->RepairDeviation = report.RepairDeviation;
   this->NumberOfCrossingPairs =
     static_cast<vtkIdType>(report.CrossingShells + report.CrossingFarApart);
 
@@ -71,6 +74,13 @@ int vtkMedialSurfaceValidator::RequestData(
     return 0;
   }
 
+  for (const auto& note : report.Notes)
+  {
+    if (this->Wrapped && note.rfind("self-intersections repaired by wrapping", 0) == 0)
+    {
+      vtkWarningMacro(<< note);
+    }
+  }
   vtkFieldData* fd = output->GetFieldData();
   medialaxis::AddFieldValue(output, "NumberOfMergedPoints", this->NumberOfMergedPoints);
   medialaxis::AddFieldValue(
@@ -83,6 +93,8 @@ int vtkMedialSurfaceValidator::RequestData(
   medialaxis::AddFieldValue(output, "NumberOfCrossingPairs", this->NumberOfCrossingPairs);
   medialaxis::AddFieldValue(output, "Repaired", this->Repaired ? 1 : 0);
   AddValue(fd, "RemovedArea", this->RemovedArea);
+  medialaxis::AddFieldValue(output, "Wrapped", this->Wrapped ? 1 : 0);
+  AddValue(fd, "RepairDeviation", this->RepairDeviation);
   AddValue(fd, "Area", this->Area);
   AddValue(fd, "Volume", this->Volume);
   if (!this->Notes.empty())
@@ -104,7 +116,10 @@ void vtkMedialSurfaceValidator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RelativeMergeTolerance: " << this->RelativeMergeTolerance << "\n";
   os << indent << "FixOrientation: " << this->FixOrientation << "\n";
   os << indent << "RepairSelfIntersections: " << this->RepairSelfIntersections << "\n";
+  os << indent << "WrapAlpha: " << this->WrapAlpha << "\n";
   os << indent << "Repaired: " << this->Repaired << "\n";
+  os << indent << "Wrapped: " << this->Wrapped << "\n";
+  os << indent << "RepairDeviation: " << this->RepairDeviation << "\n";
   os << indent << "Valid: " << this->Valid << "\n";
   os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
 }

@@ -22,7 +22,11 @@
  * refused too, unless RepairSelfIntersections is on: then the crossings are
  * resolved into the closed outer boundary of the solid they enclose (CGAL's
  * autorefinement, the parts inside removed), which is prepared and output,
- * with a note of the pairs resolved and the area removed.
+ * with a note of the pairs resolved and the area removed. Where that gives
+ * up (three triangles crossing at one point, common in exported booleans),
+ * the surface is wrapped instead (CGAL's alpha wrapping, balls of
+ * WrapAlpha times the diagonal): Wrapped is set, RepairDeviation says how
+ * far the wrap strays from the input, and a warning says so.
  *
  * The output's field data carries the counts (arrays named like the getters).
  */
@@ -66,6 +70,15 @@ public:
   vtkBooleanMacro(RepairSelfIntersections, bool);
   ///@}
 
+  ///@{
+  /// The repair's fallback where the crossings cannot be resolved exactly:
+  /// wrap the surface with balls of this fraction of the bounding-box
+  /// diagonal (details narrower than that are bridged). 0 refuses such a
+  /// surface instead. Default 1/150.
+  vtkSetClampMacro(WrapAlpha, double, 0.0, 0.1);
+  vtkGetMacro(WrapAlpha, double);
+  ///@}
+
   /// True when the last update produced a usable surface.
   vtkGetMacro(Valid, bool);
   /// Why the last update refused the surface ("" when valid).
@@ -90,6 +103,11 @@ public:
   /// Whether the crossings were repaired, and the input's area removed.
   vtkGetMacro(Repaired, bool);
   vtkGetMacro(RemovedArea, double);
+  /// Whether the repair wrapped the surface (the fallback), and the largest
+  /// distance from the repaired surface to the input as a fraction of the
+  /// bounding-box diagonal (0 when the crossings were resolved).
+  vtkGetMacro(Wrapped, bool);
+  vtkGetMacro(RepairDeviation, double);
   vtkGetMacro(Area, double);
   vtkGetMacro(Volume, double);
   ///@}
@@ -103,10 +121,13 @@ protected:
   double RelativeMergeTolerance = 1e-10;
   bool FixOrientation = true;
   bool RepairSelfIntersections = false;
+  double WrapAlpha = 1.0 / 150.0;
 
   bool Valid = false;
   bool Repaired = false;
   double RemovedArea = 0.0;
+  bool Wrapped = false;
+  double RepairDeviation = 0.0;
   vtkIdType NumberOfCrossingPairs = 0;
   std::string ErrorMessage;
   std::string Notes;

@@ -486,6 +486,13 @@ int vtkStructuralMedialAxis::RequestData(
                     << InInputFrame(repair.Error, surface, input));
       return 0;
     }
+    for (const std::string& note : repair.Notes)
+    {
+      if (note.rfind("self-intersections repaired by wrapping", 0) == 0)
+      {
+        vtkWarningMacro(<< note);
+      }
+    }
     if (repair.Repaired)
     {
       vtkNew<vtkStaticCellLocator> locator;
@@ -697,6 +704,8 @@ int vtkStructuralMedialAxis::RequestData(
     medialaxis::AddFieldDouble(
       mat, "RepairRemovedAreaFraction", repair.RemovedArea / (repair.Area + repair.RemovedArea));
     medialaxis::AddFieldDouble(mat, "RepairSeconds", repairSeconds);
+    medialaxis::AddFieldValue(mat, "RepairWrapped", repair.RepairMethod == "alpha wrap" ? 1 : 0);
+    medialaxis::AddFieldDouble(mat, "RepairDeviationFraction", repair.RepairDeviation);
   }
   if (this->MaximumError > 0.0)
   {

@@ -28,7 +28,11 @@
  * it, port 0's field data says so (`RepairedCrossingPairs`,
  * `RepairRemovedAreaFraction`, `RepairSeconds`) and port 1 gets
  * `InputTriangleId`, the input cell each Voronoi cell's triangle is a piece
- * of.
+ * of. Where the crossings cannot be resolved exactly, the surface is
+ * wrapped instead (the validator's fallback): a warning says so, with
+ * `RepairWrapped` 1 and `RepairDeviationFraction` (the largest distance from
+ * the wrap to the input over the diagonal); `InputTriangleId` is then the
+ * nearest input cell.
  *
  * Progress moves through the stages in proportion to their usual cost; an
  * abort stops the running stage and leaves the outputs empty. Errors of a

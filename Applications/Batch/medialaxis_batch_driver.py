@@ -166,7 +166,20 @@ COLUMNS = ["mesh", "status", "preset", "crease_ratio", "triangles", "wall_second
            "sampling_seconds", "rvd_seconds", "voronoi_seconds", "simplification_seconds",
            "error_seconds", "peak_memory_mb", "spheres", "edges", "slabs", "euler_characteristic",
            "valid", "hausdorff_percent", "mean_distance_percent", "sheets", "n80",
-           "fin_area_percent", "folds_percent", "rank", "resumed", "reason", "input"]
+           "fin_area_percent", "folds_percent", "warning", "rank", "resumed", "reason", "input"]
+
+
+def repair_warning(report):
+    """What a repair of the surface did, as a warning, or ""."""
+    repair = report.get("repair", {})
+    if not repair.get("repaired"):
+        return ""
+    pairs = repair.get("crossing_pairs", 0)
+    if repair.get("method") == "alpha wrap":
+        return ("surface wrapped: %s pairs of crossing triangles could not be resolved exactly; "
+                "the wrap lies within %.3g%% of the diagonal of the input"
+                % (pairs, 100.0 * repair.get("deviation", 0.0)))
+    return "surface repaired: %s pairs of crossing triangles resolved" % pairs
 
 
 def summary_row(plan, record, resumed):
@@ -196,6 +209,7 @@ def summary_row(plan, record, resumed):
             "sheets": clean.get("sheets", ""), "n80": clean.get("n80", ""),
             "fin_area_percent": clean.get("fin_area_percent", ""),
             "folds_percent": clean.get("folds_percent", ""),
+            "warning": repair_warning(report),
             "rank": record["rank"], "resumed": resumed, "reason": record["reason"],
             "input": record["input"]}
 
@@ -210,7 +224,9 @@ def write_summary(plan, rows, ranks, started, fatal):
                "resumed": sum(1 for r in ordered if r["resumed"]),
                "ranks": ranks, "threads_per_rank": plan["threads_per_rank"],
                "wall_seconds": round(time.monotonic() - started, 3),
-               "tool_options": plan["tool_options"], "fatal": fatal, "rows": ordered}
+               "tool_options": plan["tool_options"], "fatal": fatal,
+               "warnings": ["%s: %s" % (r["mesh"], r["warning"]) for r in ordered if r["warning"]],
+               "rows": ordered}
     write_atomically(os.path.join(out, "summary.json"),
                      lambda f: json.dump(summary, f, indent=1))
 

@@ -203,9 +203,15 @@ try:
     shutil.copy(os.path.join(meshes, "cube.off"), os.path.join(faults, "crash.off"))
     shutil.copy(os.path.join(meshes, "cube.off"), os.path.join(faults, "sleep.off"))
     shutil.copy(os.path.join(meshes, "plate.off"), faults)
+    # Two boxes exported as one surface, crossing: repaired, with a warning.
+    points, triangles = box(1.0, 1.0, 1.0)
+    moved = [(x + 0.5, y + 0.3, z + 0.2) for x, y, z in points]
+    write_off(os.path.join(faults, "overlap.off"), points + moved,
+              triangles + [tuple(v + len(points) for v in t) for t in triangles])
     manifest = os.path.join(work, "faults.txt")
     with open(manifest, "w") as f:
-        f.write("# meshes\nfaults/crash.off\n\nfaults/sleep.off\nfaults/plate.off\n")
+        f.write("# meshes\nfaults/crash.off\n\nfaults/sleep.off\nfaults/plate.off\n"
+                "faults/overlap.off\n")
     wrapper = os.path.join(work, "wrapper.sh")
     with open(wrapper, "w") as f:
         f.write('#!/bin/sh\nfor a; do last=$a; input=$prev; prev=$a; done\n'
@@ -220,6 +226,10 @@ try:
     check(rows["sleep"]["status"] == "timeout" and 3 <= rows["sleep"]["wall_seconds"] < 30,
           "timeout: %s" % rows["sleep"])
     check(rows["plate"]["status"] == "done", "plate after the faults: %s" % rows["plate"])
+    check(rows["overlap"]["status"] == "done" and
+          rows["overlap"]["warning"].startswith("surface repaired") and
+          any(w.startswith("overlap: surface repaired") for w in s["warnings"]),
+          "repair warning: %s, %s" % (rows["overlap"], s["warnings"]))
 
     # 5. Bad arguments stop before any mesh runs.
     run("--samples", "many", meshes, os.path.join(work, "bad"), expect=2)

@@ -130,7 +130,8 @@ class CommandLineTest(unittest.TestCase):
         with open(report) as f:
             data = json.load(f)
         self.assertEqual(data["repair"], {"repaired": True, "crossing_pairs": 18,
-                                          "removed_area": 2.5})
+                                          "removed_area": 2.5, "method": "resolved crossings",
+                                          "deviation": 0})
         reader = vtk.vtkXMLPolyDataReader()
         reader.SetFileName(self.path("out/correspondence.vtp"))
         reader.Update()

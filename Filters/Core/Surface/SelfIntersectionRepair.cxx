@@ -44,9 +44,31 @@ struct OriginVisitor : PMP::Corefinement::Default_visitor<Mesh>
 };
 }
 
-SelfIntersectionRepairResult RepairSelfIntersections(const TriangleMesh& input)
+SelfIntersectionRepairResult RepairSelfIntersections(
+  const TriangleMesh& input, const std::vector<TriangleCrossing>& crossings)
 {
   SelfIntersectionRepairResult result;
+  auto point = [&](Index v)
+  {
+    const Point3& p = input.Points[v];
+    return Kernel::Point_3(p[0], p[1], p[2]);
+  };
+  for (const TriangleCrossing& c : crossings)
+  {
+    const Triangle& a = input.Triangles[c.A];
+    const Triangle& b = input.Triangles[c.B];
+    bool coplanar = true;
+    for (int k = 0; coplanar && k < 3; ++k)
+    {
+      coplanar = CGAL::coplanar(point(a[0]), point(a[1]), point(a[2]), point(b[k]));
+    }
+    if (coplanar)
+    {
+      result.Error = "triangles overlap in a common plane, which the exact resolution of the "
+                     "crossings does not handle";
+      return result;
+    }
+  }
   Mesh mesh;
   std::vector<Mesh::Vertex_index> vertex(input.Points.size());
   std::vector<char> used(input.Points.size(), 0);
@@ -171,6 +193,7 @@ SelfIntersectionRepairResult RepairSelfIntersections(const TriangleMesh& input)
     {
       result.Error = "the crossings do not resolve into the boundary of one solid (the result "
                      "lost the input's outermost points)";
+      result.InsideInDoubt = true;
       return result;
     }
   }

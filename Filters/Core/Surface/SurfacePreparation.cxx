@@ -6,6 +6,7 @@
 #include "Support/DisjointSets.h"
 #include "Surface/SelfIntersection.h"
 #include "Surface/SelfIntersectionRepair.h"
+#include "Surface/SurfaceWrap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -370,13 +371,33 @@ double SurfaceArea(const TriangleMesh& mesh)
 
 namespace
 {
+// The bounding-box diagonal of the points the triangles use.
+double UsedDiagonal(const TriangleMesh& mesh)
+{
+  Point3 lo{ HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+  for (const Triangle& t : mesh.Triangles)
+  {
+    for (Index v : t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        lo[k] = std::min(lo[k], mesh.Points[v][k]);
+        hi[k] = std::max(hi[k], mesh.Points[v][k]);
+      }
+    }
+  }
+  return Norm(hi - lo);
+}
+
 // The crossings found by `report` resolved: every shell turned outward on
 // its own, the union's boundary prepared again; `repaired` receives its
-// report, with the input's counts and notes. Returns why the repair failed,
-// or an empty string.
+// report, with the input's counts and notes. Where the crossings cannot be
+// resolved exactly and `mayWrap`, the surface is wrapped instead (unless
+// the inside itself is in doubt). Returns why the repair failed, or an
+// empty string.
 std::string RepairAndPrepare(const std::vector<Point3>& points, std::vector<Triangle> triangles,
   const std::vector<std::vector<Index>>& shells, const SurfacePreparationReport& report,
-  TriangleMesh& output, const SurfacePreparationOptions& options,
+  TriangleMesh& output, const SurfacePreparationOptions& options, bool mayWrap,
   SurfacePreparationReport& repaired)
 {
   for (const std::vector<Index>& shell : shells)
@@ -390,15 +411,28 @@ std::string RepairAndPrepare(const std::vector<Point3>& points, std::vector<Tria
     }
   }
   TriangleMesh oriented{ points, std::move(triangles) };
-  SelfIntersectionRepairResult repair = RepairSelfIntersections(oriented);
+  SelfIntersectionRepairResult repair = RepairSelfIntersections(oriented, report.Crossings);
+  SurfaceWrapResult wrap;
+  double diagonal = 0.0;
   if (!repair.Error.empty())
   {
-    return repair.Error;
+    if (!mayWrap || repair.InsideInDoubt || !(options.WrapAlpha > 0.0))
+    {
+      return repair.Error;
+    }
+    diagonal = UsedDiagonal(oriented);
+    const double alpha = options.WrapAlpha * diagonal;
+    wrap = WrapSurface(oriented, alpha, alpha / 30.0);
+    if (!wrap.Error.empty())
+    {
+      return repair.Error + "; wrapping it instead failed: " + wrap.Error;
+    }
   }
+  const bool wrapped = !repair.Error.empty();
   SurfacePreparationOptions again = options;
   again.RepairSelfIntersections = false;
   again.KnownCrossings = nullptr;
-  repaired = PrepareSurface(repair.Surface, output, again);
+  repaired = PrepareSurface(wrapped ? wrap.Surface : repair.Surface, output, again);
   if (!repaired.Ok())
   {
     return "the repaired surface is not usable: " + repaired.Error;
@@ -409,11 +443,25 @@ std::string RepairAndPrepare(const std::vector<Point3>& points, std::vector<Tria
     note = "repaired surface: " + note;
   }
   const double inputArea = SurfaceArea(oriented);
-  repaired.Notes.insert(repaired.Notes.begin(),
-    "self-intersections repaired: " + Count(report.SelfIntersections, "pair", "pairs") +
-      " of crossing triangles resolved into the outer boundary of the solid, " +
-      Percent(inputArea > 0.0 ? repair.RemovedArea / inputArea : 0.0) +
-      " of the area (the parts inside) removed");
+  if (wrapped)
+  {
+    repaired.Notes.insert(repaired.Notes.begin(),
+      "self-intersections repaired by wrapping: resolving " +
+        Count(report.SelfIntersections, "pair", "pairs") +
+        " of crossing triangles exactly failed (" + repair.Error +
+        "), so an alpha wrap (balls of " + Percent(wrap.Alpha / diagonal) + " of the diagonal, " +
+        Percent(wrap.Offset / diagonal) + " outside) replaced the surface; it lies within " +
+        Percent(wrap.LargestDeviation / diagonal) +
+        " of the diagonal of the input and bridges details narrower than the balls");
+  }
+  else
+  {
+    repaired.Notes.insert(repaired.Notes.begin(),
+      "self-intersections repaired: " + Count(report.SelfIntersections, "pair", "pairs") +
+        " of crossing triangles resolved into the outer boundary of the solid, " +
+        Percent(inputArea > 0.0 ? repair.RemovedArea / inputArea : 0.0) +
+        " of the area (the parts inside) removed");
+  }
   repaired.Notes.insert(repaired.Notes.begin(), report.Notes.begin(), report.Notes.end());
   repaired.InputPoints = report.InputPoints;
   repaired.InputTriangles = report.InputTriangles;
@@ -430,7 +478,9 @@ std::string RepairAndPrepare(const std::vector<Point3>& points, std::vector<Tria
   repaired.PassThroughExtent = report.PassThroughExtent;
   repaired.Crossings = report.Crossings;
   repaired.Repaired = true;
-  repaired.RemovedArea = repair.RemovedArea;
+  repaired.RemovedArea = wrapped ? 0.0 : repair.RemovedArea;
+  repaired.RepairMethod = wrapped ? "alpha wrap" : "resolved crossings";
+  repaired.RepairDeviation = wrapped ? wrap.LargestDeviation / diagonal : 0.0;
   return {};
 }
 }
@@ -754,8 +804,8 @@ SurfacePreparationReport PrepareSurface(
       if (options.RepairSelfIntersections)
       {
         SurfacePreparationReport repaired;
-        const std::string failed =
-          RepairAndPrepare(input.Points, triangles, members, report, output, options, repaired);
+        const std::string failed = RepairAndPrepare(
+          input.Points, triangles, members, report, output, options, true, repaired);
         if (failed.empty())
         {
           return repaired;
@@ -815,13 +865,14 @@ SurfacePreparationReport PrepareSurface(
         " (the surface passes through itself)";
       return refuseUnlessRepaired();
     }
-    // A small contact is kept unless it can be resolved. (Local folds are
-    // kept as they are: resolving them misclassifies the patches.)
+    // A small contact is kept unless it can be resolved exactly: wrapping
+    // the whole surface for it would cost more than it mends. (Local folds
+    // are kept as they are: resolving them misclassifies the patches.)
     if (options.RepairSelfIntersections && farApart)
     {
       SurfacePreparationReport repaired;
-      const std::string failed =
-        RepairAndPrepare(input.Points, triangles, members, report, output, options, repaired);
+      const std::string failed = RepairAndPrepare(
+        input.Points, triangles, members, report, output, options, false, repaired);
       if (failed.empty())
       {
         return repaired;

@@ -33,6 +33,12 @@ struct SurfacePreparationOptions
   /// itself, resolve the crossings into the closed outer boundary of the
   /// solid they enclose (RepairSelfIntersections) and prepare that.
   bool RepairSelfIntersections = false;
+  /// Where resolving the crossings exactly fails (CGAL's autorefinement gives
+  /// up where three triangles cross at one point), the repair wraps the
+  /// surface instead (CGAL's alpha wrapping) with balls of this fraction of
+  /// the bounding-box diagonal, 1/30 of that outside it: details narrower
+  /// than about that are bridged. Zero turns the fallback off.
+  double WrapAlpha = 1.0 / 150.0;
   /// The crossings an earlier run found on the same input with the same
   /// options (its report's Crossings): the costly exact test is skipped.
   const std::vector<TriangleCrossing>* KnownCrossings = nullptr;
@@ -68,6 +74,14 @@ struct SurfacePreparationReport
   std::vector<TriangleCrossing> Crossings;
   bool Repaired = false;    // the crossings were resolved (the counts above are the input's)
   double RemovedArea = 0.0; // of the input, inside the solid: removed by the repair
+  /// Which repair ran: "resolved crossings" (the input's triangles cut
+  /// where they cross, the parts inside removed) or "alpha wrap" (the
+  /// fallback, a new surface round the input); empty without a repair.
+  std::string RepairMethod;
+  /// The largest distance from the repaired surface to the input, as a
+  /// fraction of the bounding-box diagonal (0 for resolved crossings, which
+  /// are pieces of the input).
+  double RepairDeviation = 0.0;
   double Area = 0.0;
   double Volume = 0.0; // enclosed volume after orientation fixing
 

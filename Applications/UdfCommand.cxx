@@ -191,6 +191,7 @@ int RunUdf(const UdfOptions& o)
          << ", \"junction_edges\": " << count("JunctionEdges")
          << ", \"dropped_shrunk_triangles\": " << count("DroppedShrunkTriangles")
          << ", \"dropped_fin_triangles\": " << count("DroppedFinTriangles")
+         << ", \"non_distance_neighbours\": " << count("NonDistanceNeighbours")
          << "},\n  \"mean_snap_distance\": " << FieldValue(surface, "MeanSnapDistance")
          << ",\n  \"seconds\": {\"extraction\": " << seconds << ", \"wall\": " << wall
          << "},\n  \"peak_memory_mb\": " << PeakMegabytes() << "\n}\n";

@@ -389,6 +389,28 @@ int vtkUnsignedDistanceSurfaceExtractor::RequestData(
                      "(vtkFlyingEdges3D at 0); an unsigned distance is never negative");
     return 0;
   }
+  // A sampled distance changes by at most the spacing between neighbours:
+  // values that break that by half again were sampled wrongly, and the
+  // surface gets holes and stray pieces there. (A function is sampled here,
+  // by one caller at a time.)
+  this->NumberOfNonDistanceNeighbours = 0;
+  if (!function)
+  {
+    const medialaxis::DistanceCheck check = medialaxis::CheckDistanceBound(field, 1.5);
+    this->NumberOfNonDistanceNeighbours = static_cast<vtkIdType>(check.Violations);
+    if (check.Violations > 0)
+    {
+      vtkWarningMacro(<< "the array '" << arrayName << "' is not a distance in " << check.Violations
+                      << " places: neighbouring grid points differ by more than their spacing "
+                         "(up to "
+                      << check.Worst << " times, first near (" << check.First[0] << ", "
+                      << check.First[1] << ", " << check.First[2]
+                      << ")), and the surface will have holes and stray pieces there. "
+                         "vtkImplicitPolyDataDistance sampled by vtkSampleFunction gives such "
+                         "values: it is not safe to call from several threads (sample it on one, "
+                         "or use vtkUnsignedDistanceSource)");
+    }
+  }
   const double epsilon = this->Epsilon > 0.0 ? this->Epsilon : 2.0 * spacing;
   if (epsilon < spacing)
   {
@@ -514,6 +536,7 @@ int vtkUnsignedDistanceSurfaceExtractor::RequestData(
   medialaxis::AddFieldDouble(output, "ShellArea", area);
   medialaxis::AddFieldValue(output, "Samples", this->UsedSamples);
   medialaxis::AddFieldValue(output, "Spheres", this->UsedSpheres);
+  medialaxis::AddFieldValue(output, "NonDistanceNeighbours", this->NumberOfNonDistanceNeighbours);
   medialaxis::AddFieldValue(
     output, "BoundaryLoops", static_cast<long long>(medialaxis::CountBoundaryLoops(sheet.Surface)));
   medialaxis::AddFieldValue(

@@ -170,6 +170,10 @@ public:
   vtkGetMacro(UsedEpsilon, double);
   vtkGetMacro(UsedSamples, vtkIdType);
   vtkGetMacro(UsedSpheres, vtkIdType);
+  /// Pairs of neighbouring grid points of the input array whose values
+  /// differ by more than 1.5 times their spacing, which no distance does
+  /// (a warning names the first; 0 for a distance function).
+  vtkGetMacro(NumberOfNonDistanceNeighbours, vtkIdType);
   ///@}
 
 protected:
@@ -192,6 +196,7 @@ protected:
   double UsedEpsilon = 0.0;
   vtkIdType UsedSamples = 0;
   vtkIdType UsedSpheres = 0;
+  vtkIdType NumberOfNonDistanceNeighbours = 0;
 
 private:
   struct FunctionState;

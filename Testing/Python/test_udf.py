@@ -42,16 +42,16 @@ class UnsignedDistanceTest(unittest.TestCase):
         bounds = image.GetBounds()
         self.assertAlmostEqual(-bounds[0], 6 * spacing[0], delta=1e-9)
 
-    def extract(self, name):
+    def extract(self, name, dimensions=128):
         truth = udf_shapes.SHAPES[name]()
-        source = unsigned_distance(truth)
+        source = unsigned_distance(truth, dimensions)
         extractor = medialaxis.vtkUnsignedDistanceSurfaceExtractor()
         extractor.SetInputConnection(source.GetOutputPort())
         extractor.Update()
         return truth, extractor, source.GetOutput().GetSpacing()[0]
 
-    def check_case(self, name, junctions=False):
-        truth, extractor, spacing = self.extract(name)
+    def check_case(self, name, junctions=False, dimensions=128):
+        truth, extractor, spacing = self.extract(name, dimensions)
         surface = extractor.GetOutput()
         epsilon = extractor.GetUsedEpsilon()
         self.assertAlmostEqual(epsilon, 2 * spacing)
@@ -94,6 +94,33 @@ class UnsignedDistanceTest(unittest.TestCase):
 
     def test_garment(self):
         self.check_case("garment")
+
+    def test_cap_past_the_equator(self):
+        self.check_case("cap", dimensions=96)
+
+    def test_disk_with_a_hole(self):
+        self.check_case("annulus", dimensions=96)
+
+    def test_a_field_that_is_not_a_distance_is_named(self):
+        # Values made too large at a few grid points, as a distance sampled
+        # by several threads through a function that is not safe for them
+        # (vtkImplicitPolyDataDistance under vtkSampleFunction) comes out.
+        source = unsigned_distance(udf_shapes.disk(), 48)
+        image = vtk.vtkImageData()
+        image.DeepCopy(source.GetOutput())
+        values = vtk_to_numpy(image.GetPointData().GetArray("UnsignedDistance"))
+        spacing = image.GetSpacing()[0]
+        for i in range(0, len(values), 997):
+            values[i] += 5 * spacing
+        extractor = medialaxis.vtkUnsignedDistanceSurfaceExtractor()
+        extractor.SetInputData(image)
+        extractor.Update()
+        self.assertGreater(extractor.GetNumberOfNonDistanceNeighbours(), 0)
+        self.assertEqual(extractor.GetOutput().GetFieldData().GetArray(
+            "NonDistanceNeighbours").GetValue(0), extractor.GetNumberOfNonDistanceNeighbours())
+        extractor.SetInputData(source.GetOutput())
+        extractor.Update()
+        self.assertEqual(extractor.GetNumberOfNonDistanceNeighbours(), 0)
 
     def test_the_layer_measure_sees_two_layers(self):
         # A disk and a copy of it one epsilon above: every probed triangle

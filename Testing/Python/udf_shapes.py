@@ -108,8 +108,25 @@ def garment():
                     tube[1] + [tuple(v + offset for v in t) for t in collar[1]])
 
 
+def cap():
+    """A spherical cap past the equator (polar angle 0 to 110 degrees, radius
+    0.7): open, one boundary narrower than the widest circle."""
+    reach = math.radians(110.0)
+    return polydata(*parametric(
+        lambda s, t: (0.7 * math.sin(reach * t) * math.cos(2 * math.pi * s),
+                      0.7 * math.sin(reach * t) * math.sin(2 * math.pi * s),
+                      0.7 * math.cos(reach * t)), 160, 48, closed_u=True))
+
+
+def annulus():
+    """A disk with a hole (radii 0.3 and 1) in z = 0: two boundaries."""
+    return polydata(*parametric(
+        lambda s, t: ((0.3 + 0.7 * t) * math.cos(2 * math.pi * s),
+                      (0.3 + 0.7 * t) * math.sin(2 * math.pi * s), 0.0), 128, 24, closed_u=True))
+
+
 SHAPES = {"disk": disk, "hemisphere": hemisphere, "moebius": moebius,
-          "half_planes": half_planes, "garment": garment}
+          "half_planes": half_planes, "garment": garment, "cap": cap, "annulus": annulus}
 
 
 def disk_distance(p):

@@ -69,4 +69,42 @@ double RegularField::LargestSpacing() const
 {
   return std::max({ this->Spacing[0], this->Spacing[1], this->Spacing[2] });
 }
+
+DistanceCheck CheckDistanceBound(const RegularField& field, double slack)
+{
+  DistanceCheck check;
+  const auto& n = field.Dimensions;
+  for (int k = 0; k < n[2]; ++k)
+  {
+    for (int j = 0; j < n[1]; ++j)
+    {
+      for (int i = 0; i < n[0]; ++i)
+      {
+        const double value = field.Values[field.Index(i, j, k)];
+        const std::array<int, 3> at{ i, j, k };
+        for (int a = 0; a < 3; ++a)
+        {
+          if (at[a] + 1 >= n[a])
+          {
+            continue;
+          }
+          std::array<int, 3> next = at;
+          ++next[a];
+          const double step =
+            std::abs(field.Values[field.Index(next[0], next[1], next[2])] - value) /
+            field.Spacing[a];
+          if (step > slack)
+          {
+            if (check.Violations++ == 0)
+            {
+              check.First = field.PointAt(i, j, k);
+            }
+            check.Worst = std::max(check.Worst, step);
+          }
+        }
+      }
+    }
+  }
+  return check;
+}
 }

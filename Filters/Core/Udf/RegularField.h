@@ -33,6 +33,18 @@ struct RegularField
   Point3 Gradient(const Point3& p) const;
   double LargestSpacing() const;
 };
+
+/// Where a sampled field cannot be a distance: a distance changes by no
+/// more than the distance between two points, so neighbouring grid points
+/// (along an axis) whose values differ by more than `slack` times their
+/// spacing were sampled wrongly.
+struct DistanceCheck
+{
+  std::size_t Violations = 0; // neighbouring pairs that break the bound
+  double Worst = 0.0;         // the largest difference, in spacings
+  Point3 First{ 0, 0, 0 };    // a grid point of the first such pair
+};
+DistanceCheck CheckDistanceBound(const RegularField& field, double slack);
 }
 
 #endif

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <string>
 #include <tuple>
 
 using namespace medialaxis;
@@ -191,8 +192,20 @@ TEST_P(RoundedBoxFillets, TwelveCentreLinesWithTheirRadius)
   EXPECT_GE(score.Recall, 0.95);
 }
 
+std::string SampleCountName(const ::testing::TestParamInfo<std::size_t>& info)
+{
+  return std::to_string(info.param);
+}
+
+// Test names carry the sample count ("radius10_5000"), by which the
+// sanitizer build leaves out the larger runs (Testing/Cxx/CMakeLists.txt).
 INSTANTIATE_TEST_SUITE_P(FilletDetector, RoundedBoxFillets,
-  ::testing::Combine(::testing::Values(0.1, 0.25), ::testing::Values(2000, 5000)));
+  ::testing::Combine(::testing::Values(0.1, 0.25), ::testing::Values(2000, 5000)),
+  [](const ::testing::TestParamInfo<std::tuple<double, std::size_t>>& info)
+  {
+    return "radius" + std::to_string(std::lround(100.0 * std::get<0>(info.param))) + "_" +
+      std::to_string(std::get<1>(info.param));
+  });
 
 // The generated parts are closed, manifold and outward with their fillet
 // faces labelled.
@@ -274,7 +287,8 @@ TEST_P(PrismFillets, OnlyTheRoundedEdges)
   EXPECT_GE(score.Recall, 0.95);
 }
 
-INSTANTIATE_TEST_SUITE_P(FilletDetector, PrismFillets, ::testing::Values(2000, 5000));
+INSTANTIATE_TEST_SUITE_P(
+  FilletDetector, PrismFillets, ::testing::Values(2000, 5000), SampleCountName);
 
 // A circular fillet: the rounded top rim of a cylinder is one closed centre
 // line, the circle of radius R - rho at height h/2 - rho.
@@ -308,7 +322,8 @@ TEST_P(CylinderRim, IsOneCircularFillet)
   EXPECT_GE(score.Recall, 0.95);
 }
 
-INSTANTIATE_TEST_SUITE_P(FilletDetector, CylinderRim, ::testing::Values(2000, 5000));
+INSTANTIATE_TEST_SUITE_P(
+  FilletDetector, CylinderRim, ::testing::Values(2000, 5000), SampleCountName);
 
 // Both rims rounded, with different radii (0.2 at the top, 0.3 at the
 // bottom): two closed circular fillets, each with its own radius and faces.
@@ -347,7 +362,8 @@ TEST_P(CylinderRims, AreTwoCircularFilletsWithTheirRadii)
   EXPECT_GE(score.Recall, 0.95);
 }
 
-INSTANTIATE_TEST_SUITE_P(FilletDetector, CylinderRims, ::testing::Values(2000, 5000));
+INSTANTIATE_TEST_SUITE_P(
+  FilletDetector, CylinderRims, ::testing::Values(2000, 5000), SampleCountName);
 
 // One edge rounded with a radius growing linearly from 0.15 at the bottom to
 // 0.35 at the top (the exact rolling-ball envelope): found as one fillet
@@ -384,7 +400,8 @@ TEST_P(VariableRadiusFillet, FollowsTheRadiusProfile)
   EXPECT_GE(score.Recall, 0.95);
 }
 
-INSTANTIATE_TEST_SUITE_P(FilletDetector, VariableRadiusFillet, ::testing::Values(2000, 5000));
+INSTANTIATE_TEST_SUITE_P(
+  FilletDetector, VariableRadiusFillet, ::testing::Values(2000, 5000), SampleCountName);
 
 // A tube (a torus: a handle, a pipe) is no fillet: the faces around its
 // centre line wrap the whole circle, while a ball rolling between two faces

@@ -27,12 +27,6 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 
-double Diagonal(const TriangleMesh& mesh)
-{
-  const auto [lo, hi] = BoundingBox(mesh.Points);
-  return Norm(hi - lo);
-}
-
 // The ellipsoid with semi-axes (a, b, c), every vertex moved along the
 // normal by a Gaussian of standard deviation `noise` times the diagonal.
 TriangleMesh NoisyEllipsoid(const Point3& axes, double noise, std::uint64_t seed)
@@ -43,7 +37,7 @@ TriangleMesh NoisyEllipsoid(const Point3& axes, double noise, std::uint64_t seed
     const Point3 unit = (1.0 / Norm(p)) * p;
     p = { axes[0] * unit[0], axes[1] * unit[1], axes[2] * unit[2] };
   }
-  const double sigma = noise * Diagonal(mesh);
+  const double sigma = noise * test::Diagonal(mesh);
   std::mt19937_64 random(seed);
   std::normal_distribution<double> gaussian(0.0, sigma);
   for (Point3& p : mesh.Points)

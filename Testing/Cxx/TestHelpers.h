@@ -3,6 +3,7 @@
 #ifndef medialaxis_TestHelpers_h
 #define medialaxis_TestHelpers_h
 
+#include "Geometry/Vec3.h"
 #include "Mesh/PolygonMesh.h"
 #include "Sampling/BlueNoiseSampler.h"
 #include "Simplification/AtlasSimplifier.h"
@@ -94,6 +95,13 @@ inline TriangleMesh UnitCube(const Point3& offset = { 0, 0, 0 }, double scale = 
     { 0, 4, 6 }, { 0, 6, 2 },               // x = 0
     { 1, 3, 7 }, { 1, 7, 5 } };             // x = 1
   return m;
+}
+
+/// The diagonal of the bounding box of the mesh's points.
+inline double Diagonal(const TriangleMesh& mesh)
+{
+  const auto [lo, hi] = BoundingBox(mesh.Points);
+  return Norm(hi - lo);
 }
 
 /// Regular tetrahedron-like closed mesh with apex `a` over a base.

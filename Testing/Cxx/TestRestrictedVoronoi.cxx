@@ -39,20 +39,6 @@ std::vector<Point3> SitesOn(const TriangleMesh& mesh, std::size_t n, std::uint64
   return SampleSurface(mesh, options).Points;
 }
 
-double Diagonal(const TriangleMesh& mesh)
-{
-  Point3 lo = mesh.Points[0], hi = mesh.Points[0];
-  for (const Point3& p : mesh.Points)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  }
-  return Norm(hi - lo);
-}
-
 // Every polygon vertex is at least as close to its own site as to any other.
 void ExpectVerticesInOwnCells(
   const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites, double tolerance)
@@ -164,7 +150,7 @@ TEST(RestrictedVoronoi, BruteForceCellsOnSmallMeshes)
   {
     const std::vector<Point3> sites = SitesOn(mesh, 400);
     const RestrictedVoronoiDiagram rvd = ComputeRestrictedVoronoi(mesh, sites);
-    const double tolerance = 1e-9 * Diagonal(mesh);
+    const double tolerance = 1e-9 * test::Diagonal(mesh);
     ExpectVerticesInOwnCells(rvd, sites, tolerance);
     ExpectRandomPointsInNearestCell(mesh, rvd, sites, tolerance, 3000);
   }
@@ -180,7 +166,7 @@ TEST(RestrictedVoronoi, RealMeshAreaAndCells)
   const std::vector<Point3> sites = SitesOn(mesh, 2000);
   const RestrictedVoronoiDiagram rvd = ComputeRestrictedVoronoi(mesh, sites);
   EXPECT_LT(RelativeAreaError(rvd, mesh), 1e-9);
-  ExpectRandomPointsInNearestCell(mesh, rvd, sites, 1e-9 * Diagonal(mesh), 2000);
+  ExpectRandomPointsInNearestCell(mesh, rvd, sites, 1e-9 * test::Diagonal(mesh), 2000);
 }
 
 TEST(RestrictedVoronoi, ThinPlateCellsKeepBothPieces)
@@ -216,7 +202,7 @@ TEST(RestrictedVoronoi, ThinPlateCellsKeepBothPieces)
   std::cout << twoPieces << " of " << interior << " interior cells have two pieces\n";
   EXPECT_GT(interior, 100);
   EXPECT_EQ(twoPieces, interior);
-  ExpectRandomPointsInNearestCell(plate, rvd, sites, 1e-9 * Diagonal(plate), 5000);
+  ExpectRandomPointsInNearestCell(plate, rvd, sites, 1e-9 * test::Diagonal(plate), 5000);
   // Both faces of every piece are found: each top site owns area on the bottom.
   std::vector<double> bottomArea(sites.size(), 0.0);
   for (std::size_t p = 0; p < rvd.NumberOfPolygons(); ++p)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Surface/SelfIntersectionRepair.h"
 
+#include "Surface/CgalTriangleMesh.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -127,31 +129,14 @@ SelfIntersectionRepairResult RepairSelfIntersections(
   }
 
   // Back to our mesh, points in the order CGAL keeps them.
-  std::vector<Index> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), -1);
-  for (Mesh::Vertex_index v : mesh.vertices())
+  std::vector<Face> faces;
+  if (!ToTriangleMesh(mesh, result.Surface, &faces))
   {
-    index[v] = static_cast<Index>(result.Surface.Points.size());
-    const Kernel::Point_3& p = mesh.point(v);
-    result.Surface.Points.push_back({ p.x(), p.y(), p.z() });
+    result.Error = "resolving the crossings left a face that is not a triangle";
+    return result;
   }
-  for (Face f : mesh.faces())
+  for (Face f : faces)
   {
-    Triangle t{};
-    int k = 0;
-    for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-    {
-      if (k < 3)
-      {
-        t[k] = index[v];
-      }
-      ++k;
-    }
-    if (k != 3)
-    {
-      result.Error = "resolving the crossings left a face that is not a triangle";
-      return result;
-    }
-    result.Surface.Triangles.push_back(t);
     result.InputTriangle.push_back(origin[f]);
   }
   result.RemovedArea = inputArea - PMP::area(mesh);

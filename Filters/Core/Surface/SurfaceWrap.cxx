@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Surface/SurfaceWrap.h"
 
+#include "Surface/CgalTriangleMesh.h"
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -71,31 +73,10 @@ SurfaceWrapResult WrapSurface(const TriangleMesh& input, double alpha, double of
     return result;
   }
 
-  std::vector<Index> index(wrap.number_of_vertices() + wrap.number_of_removed_vertices(), -1);
-  for (Mesh::Vertex_index v : wrap.vertices())
+  if (!ToTriangleMesh(wrap, result.Surface))
   {
-    index[v] = static_cast<Index>(result.Surface.Points.size());
-    const KPoint& p = wrap.point(v);
-    result.Surface.Points.push_back({ p.x(), p.y(), p.z() });
-  }
-  for (Mesh::Face_index f : wrap.faces())
-  {
-    Triangle t{};
-    int k = 0;
-    for (Mesh::Vertex_index v : CGAL::vertices_around_face(wrap.halfedge(f), wrap))
-    {
-      if (k < 3)
-      {
-        t[k] = index[v];
-      }
-      ++k;
-    }
-    if (k != 3)
-    {
-      result.Error = "the wrap has a face that is not a triangle";
-      return result;
-    }
-    result.Surface.Triangles.push_back(t);
+    result.Error = "the wrap has a face that is not a triangle";
+    return result;
   }
 
   // How far the wrap strays from the input: at its vertices and the

@@ -178,6 +178,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   SurfacePreparationOptions options;
   options.FixOrientation = (flags & 4) == 0;
   options.RepairSelfIntersections = (flags & 16) != 0;
+  // The wrapping fallback with coarse balls: its cost grows with the square
+  // of diagonal / alpha, and at the default a unit outlasts the fuzzer's
+  // time limit; the code around it is the same.
+  options.WrapAlpha = 0.05;
   TriangleMesh surface;
   const SurfacePreparationReport report = PrepareSurface(soup, surface, options);
   if (!report.Ok())

@@ -8,6 +8,7 @@
 #include "vtkPrimitiveCollection.h"
 #include "vtkSurfacePreparation.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkDataObject.h"
 #include "vtkDemandDrivenPipeline.h"
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkMedialSkeletalDiagram);
 
@@ -127,23 +129,34 @@ int vtkMedialSkeletalDiagram::RequestData(
   const medialaxis::SkeletalDiagram diagram =
     medialaxis::BuildSkeletalDiagram(surface, medial, options);
 
+  // The skeleton: its vertices, then the bends of its edges; an edge is a
+  // polyline through its bends.
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkIdTypeArray> vertexIds;
   vertexIds->SetName("MedialVertexId");
   vtkNew<vtkDoubleArray> radius;
   radius->SetName(medialaxis::RadiusArrayName);
-  for (std::size_t v = 0; v < diagram.Points.size(); ++v)
+  auto addPoint = [&](medialaxis::Index medialVertex)
   {
-    points->InsertNextPoint(diagram.Points[v].data());
-    vertexIds->InsertNextValue(diagram.Sites[v]);
-    radius->InsertNextValue(medial.Radii[diagram.Sites[v]]);
+    vertexIds->InsertNextValue(medialVertex);
+    radius->InsertNextValue(medial.Radii[medialVertex]);
+    return points->InsertNextPoint(medial.Centers[medialVertex].data());
+  };
+  for (medialaxis::Index site : diagram.Sites)
+  {
+    addPoint(site);
   }
   vtkNew<vtkCellArray> lines, triangles;
-  for (const auto& e : diagram.Edges)
+  for (std::size_t e = 0; e < diagram.Edges.size(); ++e)
   {
-    const vtkIdType ids[2] = { e[0], e[1] };
-    lines->InsertNextCell(2, ids);
+    std::vector<vtkIdType> ids = { diagram.Edges[e][0] };
+    for (medialaxis::Index bend : diagram.EdgeBends[e])
+    {
+      ids.push_back(addPoint(bend));
+    }
+    ids.push_back(diagram.Edges[e][1]);
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
   }
   for (const auto& t : diagram.Triangles)
   {
@@ -157,15 +170,26 @@ int vtkMedialSkeletalDiagram::RequestData(
   skeleton->GetPointData()->AddArray(radius);
   skeleton->GetPointData()->SetActiveScalars(medialaxis::RadiusArrayName);
   const double diagonal = diagram.Diagonal > 0.0 ? diagram.Diagonal : 1.0;
+  medialaxis::AddFieldValue(skeleton, "Vertices", static_cast<long long>(diagram.Points.size()));
   medialaxis::AddFieldDouble(skeleton, "Error", diagram.Error / diagonal);
   medialaxis::AddFieldDouble(skeleton, "MeanError", diagram.MeanError / diagonal);
   medialaxis::AddFieldValue(skeleton, "Insertions", diagram.Insertions);
   medialaxis::AddFieldValue(skeleton, "FailedElements", diagram.FailedElements);
+  medialaxis::AddFieldValue(skeleton, "OmittedTriangles", diagram.OmittedTriangles);
   medialaxis::AddFieldValue(
     skeleton, "ContinuousParameters", static_cast<long long>(diagram.ContinuousParameters()));
 
-  primitives->SetNumberOfPartitionedDataSets(static_cast<unsigned int>(diagram.Primitives.size()));
-  for (std::size_t e = 0; e < diagram.Primitives.size(); ++e)
+  // One partitioned dataset per element; a bent edge's primitive is its
+  // pieces' meshes, one closed shell each, in one polydata.
+  const std::size_t elements = diagram.NumberOfElements();
+  std::vector<std::vector<vtkSmartPointer<vtkPolyData>>> pieces(elements);
+  for (std::size_t k = 0; k < diagram.Primitives.size(); ++k)
+  {
+    pieces[diagram.PieceElement[k]].push_back(
+      medialaxis::PrimitiveMesh(diagram.Templates[k], diagram.Primitives[k]));
+  }
+  primitives->SetNumberOfPartitionedDataSets(static_cast<unsigned int>(elements));
+  for (std::size_t e = 0; e < elements; ++e)
   {
     const std::size_t vertices = diagram.Points.size(), edges = diagram.Edges.size();
     medialaxis::SkeletalElement type;
@@ -190,8 +214,25 @@ int vtkMedialSkeletalDiagram::RequestData(
       id = static_cast<vtkIdType>(e - vertices - edges);
       name = "triangle " + std::to_string(id);
     }
-    medialaxis::SetPrimitive(primitives, static_cast<unsigned int>(e),
-      medialaxis::PrimitiveMesh(diagram.Templates[e], diagram.Primitives[e]), type, id, name);
+    vtkSmartPointer<vtkPolyData> mesh = pieces[e].size() == 1 ? pieces[e][0] : nullptr;
+    if (!mesh)
+    {
+      vtkNew<vtkAppendPolyData> append;
+      for (vtkPolyData* piece : pieces[e])
+      {
+        if (piece->GetNumberOfCells() > 0)
+        {
+          append->AddInputData(piece);
+        }
+      }
+      mesh = vtkSmartPointer<vtkPolyData>::New();
+      if (append->GetNumberOfInputConnections(0) > 0)
+      {
+        append->Update();
+        mesh->ShallowCopy(append->GetOutput());
+      }
+    }
+    medialaxis::SetPrimitive(primitives, static_cast<unsigned int>(e), mesh, type, id, name);
   }
   if (this->Reconstruct && !diagram.Aborted)
   {
@@ -230,8 +271,9 @@ int vtkMedialSkeletalDiagram::RequestData(
   if (diagram.FailedElements > 0)
   {
     vtkWarningMacro(<< diagram.FailedElements << " of " << diagram.NumberOfElements()
-                    << " skeletal elements leave the surface and have no primitive (a skeletal "
-                       "edge or triangle cutting across a concave part)");
+                    << " skeletal elements leave the surface and have no primitive (medial "
+                       "vertices outside the surface on every route: is the medial mesh that of "
+                       "this surface?)");
   }
   if (diagram.Error > options.MaximumError * diagonal && !diagram.Aborted)
   {

@@ -15,22 +15,32 @@
  * fitted to every element, and a site is added where the surface lies
  * farthest from the primitives' union, until every surface point is within
  * MaximumError (fraction of the bounding-box diagonal) of it or one more
- * site would take the diagram past MaximumElements. The paper's global
- * optimisation of the sites and its exact refinement are not done.
+ * site would take the diagram past MaximumElements. Sites are medial
+ * vertices inside the surface. An edge whose straight chord would leave the
+ * surface (sites on either side of a bend or a concave part) is routed
+ * inside it along the medial mesh, bending at medial vertices (the paper
+ * subdivides such edges); its primitive is one piece per straight part. A
+ * triangle whose flat face would leave the surface is left out (its sides
+ * stay). The paper's global optimisation of the sites and its exact
+ * refinement are not done.
  *
  * Inputs: port 0 the closed surface; port 1 its simplified medial mesh
  * (point data `Radius`), e.g. vtkStructuralMedialAxis with a few hundred
  * spheres.
  *
- * Output 0: the skeleton: its vertices (point data `MedialVertexId`,
- * `Radius`: the medial sphere's), lines for its edges, triangles; field data
- * `Error` and `MeanError` (surface to primitives, fractions of the
- * diagonal), `Insertions`, `FailedElements` (elements whose primitive
- * leaves the surface and is left out) and `ContinuousParameters` (the
- * paper's N_c: the radii of all primitives plus three coordinates per
- * skeletal vertex). Output 1: the primitives as
- * vtkGeneralizedPrimitiveFitter gives them (vertices, then edges, then
- * triangles in the order of output 0's points and cells).
+ * Output 0: the skeleton: its vertices, then the bends of its edges (point
+ * data `MedialVertexId`, `Radius`: the medial sphere's), a polyline per
+ * edge (through its bends), triangles; field data `Vertices` (how many of
+ * the points are skeletal vertices), `Error` and `MeanError` (surface to
+ * primitives, fractions of the diagonal), `Insertions`, `FailedElements`
+ * (elements with a piece outside the surface and so without a primitive),
+ * `OmittedTriangles` (triangles of the dual left out) and
+ * `ContinuousParameters` (the paper's N_c: the radii of all primitives
+ * plus three coordinates per skeletal vertex and bend). Output 1: the
+ * primitives as vtkGeneralizedPrimitiveFitter gives them, one partitioned
+ * dataset per element (vertices, then edges, then triangles in the order
+ * of output 0's vertices and cells; a bent edge's is one closed shell per
+ * straight piece).
  *
  * Output 2 (when Reconstruct is on): the union of the primitives as one
  * closed, outward triangle surface: the zero level set of

@@ -11,6 +11,7 @@
 #include "vtkStructuralMedialAxis.h"
 #include "vtkSurfaceFileReader.h"
 
+#include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPolyData.h"
@@ -79,10 +80,13 @@ int main(int argc, char* argv[])
     std::cerr << "no skeletal diagram (see the messages above)\n";
     return 1;
   }
-  std::cout << "skeletal diagram: " << skeleton->GetNumberOfPoints() << " vertices, "
-            << skeleton->GetNumberOfLines() << " edges, " << skeleton->GetNumberOfPolys()
-            << " triangles; surface within " << 100.0 * diagram->GetReachedError()
-            << "% of the diagonal of the primitives\n";
+  // The skeleton's points: its vertices, then the bends of edges routed
+  // inside the surface (each edge is a polyline).
+  const auto vertices =
+    static_cast<vtkIdType>(skeleton->GetFieldData()->GetArray("Vertices")->GetTuple1(0));
+  std::cout << "skeletal diagram: " << vertices << " vertices, " << skeleton->GetNumberOfLines()
+            << " edges, " << skeleton->GetNumberOfPolys() << " triangles; surface within "
+            << 100.0 * diagram->GetReachedError() << "% of the diagonal of the primitives\n";
 
   // The skeleton, and each primitive in a file of its own (primitive_E.vtp,
   // E its element's index: vertices, then edges, then triangles).

@@ -405,6 +405,58 @@ TEST(SkeletalDiagram, FewElementsCoverSimpleShapes)
   EXPECT_LE(one.Error, SkeletalDiagramOptions().MaximumError * one.Diagonal);
 }
 
+// Three sites spread round a torus (R = 1, r = 0.2): the chord between two
+// of them (0.5 from the centre) crosses the hole, so each skeletal edge is
+// routed along the medial ring and bends inside the tube. Every element
+// gets a primitive, every straight piece stays inside, and the skeleton
+// keeps the torus's one loop.
+TEST(SkeletalDiagram, EdgesAcrossAHoleAreRoutedInside)
+{
+  const TriangleMesh torus = MakeTorus(1.0, 0.2, 48);
+  const test::SimplifiedRun run = test::Simplify(torus, 5000, 200, false);
+  SkeletalDiagramOptions options;
+  options.InitialSites = 3;
+  options.MaximumElements = 6;
+  // The primitives' refinement does not bear on the routes (and on a bent
+  // tube it is what takes the time).
+  options.Fit.MaximumRefinements = 0;
+  const SkeletalDiagram diagram = BuildSkeletalDiagram(torus, run.Result.Medial.Mesh, options);
+  std::size_t bends = 0;
+  for (const auto& b : diagram.EdgeBends)
+  {
+    bends += b.size();
+  }
+  std::cout << "torus: " << diagram.Points.size() << " vertices, " << diagram.Edges.size()
+            << " edges with " << bends << " bends, " << diagram.Triangles.size()
+            << " triangles; error " << 100.0 * diagram.Error / diagram.Diagonal << "%, "
+            << diagram.FailedElements << " failed\n";
+  ASSERT_EQ(diagram.Points.size(), 3u);
+  ASSERT_EQ(diagram.Edges.size(), 3u);
+  EXPECT_EQ(diagram.FailedElements, 0);
+  EXPECT_GE(bends, 3u);
+  const TriangleLocator locator(torus);
+  for (std::size_t e = 0; e < diagram.Edges.size(); ++e)
+  {
+    const std::vector<Point3> line = diagram.EdgePolyline(e);
+    for (std::size_t k = 0; k + 1 < line.size(); ++k)
+    {
+      const Point3 d = line[k + 1] - line[k];
+      EXPECT_LT(locator.FirstHit(line[k], Normalized(d), 0.0, Norm(d)).Triangle, 0)
+        << "edge " << e << " piece " << k;
+      EXPECT_TRUE(locator.Inside(line[k]));
+    }
+  }
+  // One primitive per vertex, per straight piece and per triangle, each
+  // belonging to its element.
+  EXPECT_EQ(diagram.Primitives.size(), diagram.PieceElement.size());
+  EXPECT_EQ(diagram.Primitives.size(),
+    diagram.Points.size() + diagram.Edges.size() + bends + diagram.Triangles.size());
+  EXPECT_TRUE(std::is_sorted(diagram.PieceElement.begin(), diagram.PieceElement.end()));
+  EXPECT_EQ(diagram.PieceElement.back(), static_cast<Index>(diagram.NumberOfElements() - 1));
+  // The loop round the hole: a cycle of three edges.
+  EXPECT_EQ(diagram.Triangles.size(), 0u);
+}
+
 // A vertex primitive in one arm of an L-shaped block: two neighbouring
 // directions of a coarse template pass either side of the reflex edge and
 // run far along the two arms, so the triangle between them cuts across the
@@ -708,8 +760,10 @@ TEST(SkeletalDiagram, VtkFilterGivesSkeletonAndPrimitives)
             << " triangles, error " << 100.0 * diagram->GetReachedError() << "%\n";
   EXPECT_EQ(warnings->Count, 0) << warnings->Last;
   EXPECT_LE(diagram->GetReachedError(), diagram->GetMaximumError());
+  const vtkIdType vertices =
+    static_cast<vtkIdType>(skeleton->GetFieldData()->GetArray("Vertices")->GetTuple1(0));
   EXPECT_EQ(diagram->GetNumberOfElements(),
-    skeleton->GetNumberOfPoints() + skeleton->GetNumberOfLines() + skeleton->GetNumberOfPolys());
+    vertices + skeleton->GetNumberOfLines() + skeleton->GetNumberOfPolys());
   EXPECT_EQ(static_cast<vtkIdType>(primitives->GetNumberOfPartitionedDataSets()),
     diagram->GetNumberOfElements());
   ASSERT_NE(skeleton->GetPointData()->GetArray("MedialVertexId"), nullptr);

@@ -220,9 +220,12 @@ msd_skeleton = servermanager.Fetch(msd, idx=0)
 msd_error = msd_skeleton.GetFieldData().GetArray("Error").GetValue(0)
 check(msd_skeleton.GetNumberOfPoints() >= 2 and msd_error <= 0.005,
       "dumbbell diagram: %d vertices, error %g" % (msd_skeleton.GetNumberOfPoints(), msd_error))
-check(msd.GetDataInformation(1).GetNumberOfDataSets() == msd_skeleton.GetNumberOfPoints()
+msd_vertices = msd_skeleton.GetFieldData().GetArray("Vertices").GetValue(0)
+check(msd.GetDataInformation(1).GetNumberOfDataSets() == msd_vertices
       + msd_skeleton.GetNumberOfLines() + msd_skeleton.GetNumberOfPolys(),
       "one primitive per element")
+check(msd_skeleton.GetFieldData().GetArray("FailedElements").GetValue(0) == 0,
+      "every element of the dumbbell's diagram has a primitive")
 # An open surface from its unsigned distance: a disk has one boundary.
 disk = Triangulate(Input=Disk(InnerRadius=0.0, OuterRadius=1.0, CircumferentialResolution=64,
                               RadialResolution=16))

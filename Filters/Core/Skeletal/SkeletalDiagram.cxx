@@ -2,6 +2,7 @@
 #include "Skeletal/SkeletalDiagram.h"
 
 #include "Mesh/TriangleLocator.h"
+#include "Skeletal/DualSkeleton.h"
 #include "Skeletal/PrimitiveUnion.h"
 
 #include <tbb/blocked_range.h>
@@ -22,60 +23,8 @@ namespace
 {
 constexpr double Infinity = std::numeric_limits<double>::infinity();
 
-struct Graph
-{
-  std::vector<std::vector<std::pair<Index, double>>> Neighbours;
-};
-
-Graph MedialGraph(const MedialMesh& medial)
-{
-  Graph graph;
-  graph.Neighbours.resize(medial.NumberOfVertices());
-  for (const auto& e : AllEdges(medial))
-  {
-    const double length = Norm(medial.Centers[e[1]] - medial.Centers[e[0]]);
-    graph.Neighbours[e[0]].push_back({ e[1], length });
-    graph.Neighbours[e[1]].push_back({ e[0], length });
-  }
-  return graph;
-}
-
-// Multi-source Dijkstra along the medial edges: each vertex's nearest
-// site (by position in `sites`; ties to the earlier site) and distance.
-void NearestSites(const Graph& graph, const std::vector<Index>& sites, std::vector<int>& owner,
-  std::vector<double>& distance)
-{
-  const std::size_t n = graph.Neighbours.size();
-  owner.assign(n, -1);
-  distance.assign(n, Infinity);
-  using Entry = std::tuple<double, int, Index>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  for (std::size_t s = 0; s < sites.size(); ++s)
-  {
-    queue.push({ 0.0, static_cast<int>(s), sites[s] });
-  }
-  while (!queue.empty())
-  {
-    const auto [d, site, v] = queue.top();
-    queue.pop();
-    if (owner[v] >= 0)
-    {
-      continue;
-    }
-    owner[v] = site;
-    distance[v] = d;
-    for (const auto& [w, length] : graph.Neighbours[v])
-    {
-      if (owner[w] < 0)
-      {
-        queue.push({ d + length, site, w });
-      }
-    }
-  }
-}
-
-// The element of the skeleton a template stands for, as a key of site
-// indices (sorted) and its kind: fits are reused while it stays.
+// The element (or edge piece) a template stands for, as its kind and the
+// medial vertices of its corners: fits are reused while it stays.
 using ElementKey = std::pair<int, std::array<Index, 3>>;
 
 struct Fitted
@@ -94,12 +43,16 @@ struct Fitted
 std::size_t MeasureCoverage(SkeletalDiagram& diagram, const std::vector<Point3>& checks, bool exact)
 {
   std::vector<TriangleMesh> pieces;
-  diagram.FailedElements = 0;
-  for (std::size_t e = 0; e < diagram.Primitives.size(); ++e)
+  std::set<Index> failed;
+  for (std::size_t k = 0; k < diagram.Primitives.size(); ++k)
   {
-    pieces.push_back(PrimitiveSurface(diagram.Templates[e], diagram.Primitives[e]));
-    diagram.FailedElements += pieces.back().Triangles.empty() ? 1 : 0;
+    pieces.push_back(PrimitiveSurface(diagram.Templates[k], diagram.Primitives[k]));
+    if (pieces.back().Triangles.empty())
+    {
+      failed.insert(diagram.PieceElement[k]);
+    }
   }
+  diagram.FailedElements = static_cast<int>(failed.size());
   std::vector<double> gap(checks.size(), Infinity);
   if (exact)
   {
@@ -167,7 +120,7 @@ SkeletalDiagram BuildSkeletalDiagram(
   const double spacing = options.Spacing * diagonal;
   const double bound = options.MaximumError * diagonal;
   const TriangleLocator locator(surface);
-  const Graph graph = MedialGraph(medial);
+  const MedialGraph graph = BuildMedialGraph(medial);
 
   // Where coverage is measured: the surface's vertices and centroids.
   std::vector<Point3> checks = surface.Points;
@@ -177,18 +130,48 @@ SkeletalDiagram BuildSkeletalDiagram(
       (1.0 / 3.0) * (surface.Points[t[0]] + surface.Points[t[1]] + surface.Points[t[2]]));
   }
 
+  // Sites, and the bends of edges, are medial vertices inside the surface
+  // (a simplified medial mesh may stray outside it in thin parts, where no
+  // primitive can be fitted). If none is, all are candidates, and their
+  // primitives fail and are counted.
+  std::vector<std::uint8_t> inside(n, 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64),
+    [&](const tbb::blocked_range<std::size_t>& range)
+    {
+      for (std::size_t v = range.begin(); v != range.end(); ++v)
+      {
+        inside[v] = locator.Inside(medial.Centers[v]) ? 1 : 0;
+      }
+    });
+  if (std::find(inside.begin(), inside.end(), 1) == inside.end())
+  {
+    std::fill(inside.begin(), inside.end(), 1);
+  }
+  // The candidate with the largest value (the first on a tie).
+  auto largestInside = [&](const std::vector<double>& value)
+  {
+    Index best = -1;
+    for (std::size_t v = 0; v < n; ++v)
+    {
+      if (inside[v] && (best < 0 || value[v] > value[best]))
+      {
+        best = static_cast<Index>(v);
+      }
+    }
+    return best;
+  };
+
   // Initial sites: the largest sphere, then farthest-point selection along
   // the medial edges (an unreachable vertex, on another component, first).
-  std::vector<Index> sites;
-  sites.push_back(static_cast<Index>(
-    std::max_element(medial.Radii.begin(), medial.Radii.end()) - medial.Radii.begin()));
-  std::vector<int> owner;
-  std::vector<double> distance;
+  std::vector<Index> sites = { largestInside(medial.Radii) };
   while (static_cast<int>(sites.size()) < std::min<int>(options.InitialSites, static_cast<int>(n)))
   {
-    NearestSites(graph, sites, owner, distance);
-    sites.push_back(
-      static_cast<Index>(std::max_element(distance.begin(), distance.end()) - distance.begin()));
+    const Index farthest = largestInside(NearestSites(graph, sites).Distance);
+    if (std::find(sites.begin(), sites.end(), farthest) != sites.end())
+    {
+      break; // every candidate is a site
+    }
+    sites.push_back(farthest);
   }
 
   std::map<ElementKey, Fitted> cache;
@@ -224,7 +207,8 @@ SkeletalDiagram BuildSkeletalDiagram(
   for (;;)
   {
     // The skeleton: the dual of the sites' cells on the medial mesh.
-    NearestSites(graph, sites, owner, distance);
+    const DualSkeleton dual =
+      BuildDualSkeleton(medial, locator, inside, sites, NearestSites(graph, sites));
     SkeletalDiagram current;
     current.Diagonal = diagonal;
     current.Sites = sites;
@@ -234,40 +218,37 @@ SkeletalDiagram BuildSkeletalDiagram(
     {
       current.Points.push_back(medial.Centers[s]);
     }
-    std::set<std::array<Index, 2>> edges;
-    for (const auto& e : AllEdges(medial))
+    current.Edges = dual.Edges;
+    for (const std::vector<Index>& route : dual.Routes)
     {
-      const int a = owner[e[0]], b = owner[e[1]];
-      if (a >= 0 && b >= 0 && a != b)
+      current.EdgeBends.emplace_back(route.begin() + 1, route.end() - 1);
+      std::vector<Point3>& points = current.EdgeBendPoints.emplace_back();
+      for (Index v : current.EdgeBends.back())
       {
-        edges.insert({ std::min<Index>(a, b), std::max<Index>(a, b) });
+        points.push_back(medial.Centers[v]);
       }
     }
-    std::set<std::array<Index, 3>> triangles;
-    for (const auto& f : medial.Faces)
-    {
-      std::array<Index, 3> cells = { owner[f[0]], owner[f[1]], owner[f[2]] };
-      std::sort(cells.begin(), cells.end());
-      if (cells[0] >= 0 && cells[0] != cells[1] && cells[1] != cells[2])
-      {
-        triangles.insert(cells);
-      }
-    }
-    current.Edges.assign(edges.begin(), edges.end());
-    current.Triangles.assign(triangles.begin(), triangles.end());
 
-    // The primitives, new ones fitted in parallel (each on its own, so the
-    // result does not depend on the threads).
+    // The primitives' keys: a vertex, each straight piece of an edge, a
+    // triangle; new ones fitted in parallel (each on its own, so the result
+    // does not depend on the threads).
     std::vector<ElementKey> keys;
+    std::vector<Index> element;
     for (std::size_t v = 0; v < sites.size(); ++v)
     {
       keys.push_back({ 0, { sites[v], -1, -1 } });
+      element.push_back(static_cast<Index>(v));
     }
-    for (const auto& e : current.Edges)
+    for (std::size_t e = 0; e < dual.Routes.size(); ++e)
     {
-      keys.push_back({ 1, { sites[e[0]], sites[e[1]], -1 } });
+      const std::vector<Index>& route = dual.Routes[e];
+      for (std::size_t k = 0; k + 1 < route.size(); ++k)
+      {
+        keys.push_back({ 1, { route[k], route[k + 1], -1 } });
+        element.push_back(static_cast<Index>(sites.size() + e));
+      }
     }
-    for (const auto& t : current.Triangles)
+    for (const auto& t : dual.Triangles)
     {
       keys.push_back({ 2, { sites[t[0]], sites[t[1]], sites[t[2]] } });
     }
@@ -292,9 +273,28 @@ SkeletalDiagram BuildSkeletalDiagram(
     {
       cache.emplace(missing[k], std::move(fresh[k]));
     }
-    for (const ElementKey& key : keys)
+    // A triangle whose flat face leaves the surface has no primitive and
+    // is left out (its sides stay; the insertions cover what it would
+    // have).
+    for (std::size_t k = 0; k < keys.size(); ++k)
     {
-      const Fitted& fitted = cache.at(key);
+      const Fitted& fitted = cache.at(keys[k]);
+      if (keys[k].first == 2)
+      {
+        const auto& t = dual.Triangles[k - element.size()];
+        if (fitted.Fit.Radius.empty())
+        {
+          ++current.OmittedTriangles;
+          continue;
+        }
+        current.PieceElement.push_back(
+          static_cast<Index>(sites.size() + dual.Edges.size() + current.Triangles.size()));
+        current.Triangles.push_back({ t[0], t[1], t[2] });
+      }
+      else
+      {
+        current.PieceElement.push_back(element[k]);
+      }
       current.Templates.push_back(fitted.Template);
       current.Primitives.push_back(fitted.Fit);
     }
@@ -325,7 +325,7 @@ SkeletalDiagram BuildSkeletalDiagram(
     for (std::size_t v = 0; v < n; ++v)
     {
       const double d = std::abs(Norm(p - medial.Centers[v]) - medial.Radii[v]);
-      if (d < closest &&
+      if (d < closest && inside[v] &&
         std::find(sites.begin(), sites.end(), static_cast<Index>(v)) == sites.end())
       {
         closest = d;
@@ -370,12 +370,20 @@ SkeletalDiagram BuildSkeletalDiagram(
 std::vector<Point3> ElementPoints(const SkeletalDiagram& diagram, int perEdge)
 {
   std::vector<Point3> points = diagram.Points;
-  for (const auto& e : diagram.Edges)
+  for (std::size_t e = 0; e < diagram.Edges.size(); ++e)
   {
-    for (int k = 1; k < perEdge; ++k)
+    const std::vector<Point3> line = diagram.EdgePolyline(e);
+    for (std::size_t piece = 0; piece + 1 < line.size(); ++piece)
     {
-      const double t = static_cast<double>(k) / perEdge;
-      points.push_back((1.0 - t) * diagram.Points[e[0]] + t * diagram.Points[e[1]]);
+      if (piece > 0)
+      {
+        points.push_back(line[piece]);
+      }
+      for (int k = 1; k < perEdge; ++k)
+      {
+        const double t = static_cast<double>(k) / perEdge;
+        points.push_back((1.0 - t) * line[piece] + t * line[piece + 1]);
+      }
     }
   }
   for (const Triangle& f : diagram.Triangles)

@@ -2,6 +2,7 @@
 #include "UdfCommand.h"
 
 #include "Format/NpyFormat.h"
+#include "MedialAxisVersion.h"
 #include "ToolSupport.h"
 #include "vtkUnsignedDistanceSurfaceExtractor.h"
 
@@ -177,7 +178,9 @@ int RunUdf(const UdfOptions& o)
     int dimensions[3];
     field->GetDimensions(dimensions);
     const double* spacing = field->GetSpacing();
-    json << "{\n  \"field\": " << JsonString(o.Field) << ",\n  \"grid\": {\"dimensions\": ["
+    json << "{\n  \"version\": " << JsonString(MEDIALAXIS_VERSION)
+         << ",\n  \"commit\": " << JsonString(MEDIALAXIS_COMMIT)
+         << ",\n  \"field\": " << JsonString(o.Field) << ",\n  \"grid\": {\"dimensions\": ["
          << dimensions[0] << ", " << dimensions[1] << ", " << dimensions[2] << "], \"spacing\": ["
          << spacing[0] << ", " << spacing[1] << ", " << spacing[2]
          << "]},\n  \"epsilon\": " << extractor->GetUsedEpsilon()

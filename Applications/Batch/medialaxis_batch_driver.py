@@ -218,7 +218,7 @@ def write_summary(plan, rows, ranks, started, fatal):
     out = plan["output_dir"]
     ordered = [rows[name] for name in sorted(rows)]
     done = sum(1 for r in ordered if r["status"] == "done")
-    summary = {"meshes": len(plan["jobs"]), "done": done,
+    summary = {"version": plan.get("tool_version", ""), "meshes": len(plan["jobs"]), "done": done,
                "failed": sum(1 for r in ordered if r["status"] != "done"),
                "not_run": len(plan["jobs"]) - len(ordered),
                "resumed": sum(1 for r in ordered if r["resumed"]),

@@ -126,6 +126,8 @@ try:
     text = run(meshes, out, expect=1)
     s, rows = summary()
     check(s["meshes"] == 5 and s["done"] == 4 and s["failed"] == 1, "counts: %s" % s)
+    check(s["version"].startswith("medial-axis ") and "commit" in s["version"],
+          "the summary names the version: %r" % s["version"])
     check(rows["open_box"]["status"] == "invalid input" and
           "not closed" in rows["open_box"]["reason"], "open box: %s" % rows["open_box"])
     check(text.count("] ") >= 5 and "about" in text, "no progress line per mesh")

@@ -83,6 +83,12 @@ class CommandLineTest(unittest.TestCase):
             data = json.load(f)
         self.assertEqual(data["counts"]["vertices"], target)
         self.assertTrue(data["valid"])
+        # The report names the code that made it, as --version does.
+        version = run("--version")
+        self.assertEqual(version.returncode, 0)
+        self.assertRegex(version.stdout, r"^medial-axis \d+\.\d+\.\d+ \(commit [0-9a-z-]+\)$")
+        self.assertIn("medial-axis %s (commit %s)" % (data["version"], data["commit"]),
+                      version.stdout)
         return data
 
     def test_qmat_strategy(self):
@@ -410,7 +416,11 @@ class CommandLineTest(unittest.TestCase):
         skeleton = vtk.vtkXMLPolyDataReader()
         skeleton.SetFileName(os.path.join(out, "skeleton.vtp"))
         skeleton.Update()
-        self.assertEqual(skeleton.GetOutput().GetNumberOfPoints(), diagram["vertices"])
+        # Its points: the vertices, then the bends of edges routed inside.
+        self.assertEqual(skeleton.GetOutput().GetFieldData().GetArray("Vertices").GetValue(0),
+                         diagram["vertices"])
+        self.assertGreaterEqual(skeleton.GetOutput().GetNumberOfPoints(), diagram["vertices"])
+        self.assertEqual(diagram["omitted_triangles"], 0)
         # The primitives' union as one closed surface, measured against the
         # dumbbell like the MAT's envelope.
         union = vtk.vtkXMLPolyDataReader()

@@ -280,6 +280,7 @@ std::vector<Stage> RunPipeline(
   initial.Mesh = std::move(voronoi.Mesh);
   initial.AtlasOffsets = std::move(voronoi.AtlasOffsets);
   initial.AtlasSites = std::move(voronoi.AtlasSites);
+  initial.SiteClearance = std::move(voronoi.SiteClearance);
   AtlasSimplifierOptions options;
   options.TargetNumberOfVertices = target;
   options.PreserveSharpFeatures = cad;

@@ -149,6 +149,19 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
     vtkErrorMacro(<< "cannot simplify: " << problem);
     return 0;
   }
+  // The Voronoi stage's bounds on the distance to the nearest site, where
+  // they still describe these centres (double precision, as it wrote them).
+  vtkDataArray* clearance = matIn->GetPointData()->GetArray("SiteClearance");
+  if (clearance && clearance->GetNumberOfComponents() == 1 &&
+    clearance->GetNumberOfTuples() == matIn->GetNumberOfPoints() &&
+    matIn->GetPoints()->GetDataType() == VTK_DOUBLE)
+  {
+    input.SiteClearance.resize(static_cast<std::size_t>(clearance->GetNumberOfTuples()));
+    for (vtkIdType v = 0; v < clearance->GetNumberOfTuples(); ++v)
+    {
+      input.SiteClearance[static_cast<std::size_t>(v)] = clearance->GetComponent(v, 0);
+    }
+  }
 
   medialaxis::AtlasSimplifierOptions options;
   options.TargetNumberOfVertices = static_cast<std::size_t>(this->TargetNumberOfVertices);

@@ -4,7 +4,10 @@
  * @brief   Simplifies a medial mesh by Atlas-guided edge collapses (Structural MAT).
  *
  * Input port 0: a medial mesh with its Atlas (field data `AtlasSites` /
- * `AtlasOffsets`), normally from vtkVoronoiMedialAxis. Input port 1: the
+ * `AtlasOffsets`), normally from vtkVoronoiMedialAxis (whose point data
+ * `SiteClearance`, when present with double-precision points, spares the
+ * error bands most of their searches; the result is the same without it).
+ * Input port 1: the
  * restricted Voronoi diagram (output 0 of vtkRestrictedVoronoiDiagram): its
  * polygons give each surface cell's spherical quadric, and its field data
  * (`SitePositions`, `SiteConvexFeature`, `SiteConcaveFeature`) the per-site

@@ -8,6 +8,7 @@
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -137,6 +138,17 @@ int vtkVoronoiMedialAxis::RequestData(
     sitePair->SetTypedComponent(others + static_cast<vtkIdType>(f), 1, result.FaceSitePair[f][1]);
   }
   output->GetCellData()->AddArray(sitePair);
+  if (result.SiteClearance.size() == result.Mesh.Centers.size())
+  {
+    vtkNew<vtkDoubleArray> clearance;
+    clearance->SetName("SiteClearance");
+    clearance->SetNumberOfTuples(static_cast<vtkIdType>(result.SiteClearance.size()));
+    for (std::size_t v = 0; v < result.SiteClearance.size(); ++v)
+    {
+      clearance->SetValue(static_cast<vtkIdType>(v), result.SiteClearance[v]);
+    }
+    output->GetPointData()->AddArray(clearance);
+  }
   for (const auto& [name, value] :
     { std::pair<const char*, std::size_t>{ "DelaunayCells", result.DelaunayCells },
       { "InsideCells", result.InsideCells },

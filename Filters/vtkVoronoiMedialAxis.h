@@ -26,7 +26,10 @@
  * `SitePair`: the two sites whose Delaunay edge the face is dual to; -1 for
  * other cells); line cells for inner Voronoi edges that bound no triangle;
  * the Atlas of every vertex (its generating sites) as field data
- * `AtlasSites` / `AtlasOffsets` and point data `AtlasCount`; and field data
+ * `AtlasSites` / `AtlasOffsets` and point data `AtlasCount`; point data
+ * `SiteClearance`, a lower bound of the distance from each vertex to the
+ * nearest site from its cells' empty circumspheres (-1 where unknown), which
+ * vtkAtlasMedialAxisSimplifier uses to skip searches; and field data
  * with counts (`DelaunayCells`, `InsideCells`, `AmbiguousInsideTests`,
  * `WeldedCells`, `FilteredTriangles`, `DroppedPockets`, `SpanningCells`,
  * `OpenedVoids`, `JoinedPieces`, `CutLoops`, `FilledHoles`). A solid's

@@ -416,6 +416,37 @@ TEST(AtlasSimplifier, OutputIsValidAndDeterministic)
   }
 }
 
+// The error bands test every merged ball against the nearest site; the
+// Voronoi stage's bounds on that distance, carried through the collapses,
+// decide most tests without a search and must never change an answer.
+TEST(AtlasSimplifier, SiteClearanceBoundsChangeNothing)
+{
+  const TriangleMesh shape = MakeDumbbell(2.0, 0.45, 0.2, 48);
+  SimplifiedRun run = InitialMedialAxis(shape, 4000);
+  ASSERT_EQ(run.Initial.SiteClearance.size(), run.Initial.Mesh.Centers.size());
+  std::size_t known = 0;
+  for (double c : run.Initial.SiteClearance)
+  {
+    known += c >= 0.0 ? 1 : 0;
+  }
+  EXPECT_GT(known, run.Initial.SiteClearance.size() / 2);
+  AtlasSimplifierOptions options;
+  options.TargetNumberOfVertices = 300;
+  options.ErrorBands = ErrorBandMode::On;
+  ASSERT_TRUE(UsesErrorBands(options));
+  const AtlasSimplifierResult with =
+    SimplifyMedialAxis(run.Initial, run.Rvd, run.Sites.Points, options);
+  run.Initial.SiteClearance.clear();
+  const AtlasSimplifierResult without =
+    SimplifyMedialAxis(run.Initial, run.Rvd, run.Sites.Points, options);
+  const MedialMesh &a = with.Medial.Mesh, &b = without.Medial.Mesh;
+  ASSERT_EQ(a.Centers.size(), b.Centers.size());
+  EXPECT_EQ(0, std::memcmp(a.Centers.data(), b.Centers.data(), a.Centers.size() * sizeof(Point3)));
+  EXPECT_EQ(a.Radii, b.Radii);
+  EXPECT_EQ(a.Faces, b.Faces);
+  EXPECT_EQ(with.Medial.AtlasSites, without.Medial.AtlasSites);
+}
+
 // Without sharp features the collapses of distant edges are made in
 // parallel batches: the result must not depend on the thread count, and the
 // mesh must stay valid. With them, one collapse at a time.

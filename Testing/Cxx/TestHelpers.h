@@ -213,6 +213,7 @@ inline SimplifiedRun InitialMedialAxis(
   run.Initial.Mesh = std::move(voronoi.Mesh);
   run.Initial.AtlasOffsets = std::move(voronoi.AtlasOffsets);
   run.Initial.AtlasSites = std::move(voronoi.AtlasSites);
+  run.Initial.SiteClearance = std::move(voronoi.SiteClearance);
   return run;
 }
 

@@ -8,6 +8,8 @@
 
 #include <nanoflann.hpp>
 
+#include <algorithm>
+#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -69,6 +71,33 @@ public:
     } result{ squaredRadius, &stop, false };
     this->Tree.findNeighbors(result, query.data(), nanoflann::SearchParams());
     return result.Found;
+  }
+
+  /// The squared distance from `query` to the nearest point, unless some
+  /// point at squared distance d2 < `squaredRadius` has stop(d2) true: then
+  /// the search ends there and returns -1. With stop monotone (true for all
+  /// nearer points once true), -1 exactly when AnyWithin would find a hit;
+  /// otherwise the nearest distance comes at about the price of that search.
+  template <typename Stop>
+  double NearestUnless(const Point3& query, double squaredRadius, Stop&& stop) const
+  {
+    struct NearestOrHit
+    {
+      double Radius;
+      Stop* Test;
+      double Best;
+      bool Found;
+      bool full() const { return true; }
+      double worstDist() const { return this->Best; }
+      bool addPoint(double d2, std::uint32_t)
+      {
+        this->Found = d2 < this->Radius && (*this->Test)(d2);
+        this->Best = std::min(this->Best, d2);
+        return !this->Found;
+      }
+    } result{ squaredRadius, &stop, std::numeric_limits<double>::infinity(), false };
+    this->Tree.findNeighbors(result, query.data(), nanoflann::SearchParams());
+    return result.Found ? -1.0 : result.Best;
   }
 
   /// Points within `radius` (inclusive), with squared distances; sorted by

@@ -188,6 +188,21 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
   this->AtlasQuadric.assign(nv, SphereQuadric());
   this->Feature.assign(nv, 0);
   this->AnyInvaginated.assign(nv, 0);
+  if (this->SiteTree)
+  {
+    this->Clearance.assign(nv, SiteClearanceBound());
+    if (input.SiteClearance.size() == nv)
+    {
+      for (std::size_t v = 0; v < nv; ++v)
+      {
+        const double value = input.SiteClearance[v] * this->UnitFrame.Scale;
+        if (value >= 0.0 && std::isfinite(value))
+        {
+          this->Clearance[v] = { this->UnitFrame.To(mesh.Centers[v]), value };
+        }
+      }
+    }
+  }
   // Vertex by vertex, independently: in parallel.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 2048),
     [&](const tbb::blocked_range<std::size_t>& range)
@@ -430,11 +445,28 @@ bool AtlasPolicy::WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b,
   // when some site does: the search stops at the first (a site can only
   // fail it within Radius - ErrorBound, widened for rounding).
   const double reach = ball.Radius - this->ErrorBound;
-  if (reach > 0.0 &&
-    this->SiteTree->AnyWithin(ball.Center, reach * reach * (1.0 + 1e-9),
-      [&](double d2) { return ball.Radius - std::sqrt(d2) > this->ErrorBound; }))
+  scratch.ProvenClearance = -1.0;
+  if (reach > 0.0)
   {
-    return false;
+    // Known clear from the bounds at a and b (with a margin far above the
+    // rounding of the distances, so that the answer is the search's), or
+    // else searched: the nearest site, unless one fails the test first.
+    const double margin = 1e-9 * this->Diagonal;
+    const double known =
+      std::max(this->ClearanceAt(a, ball.Center), this->ClearanceAt(b, ball.Center));
+    double clearance = known;
+    if (known < reach + margin)
+    {
+      const double d2 = this->SiteTree->NearestUnless(ball.Center, reach * reach * (1.0 + 1e-9),
+        [&](double s2) { return ball.Radius - std::sqrt(s2) > this->ErrorBound; });
+      if (d2 < 0.0)
+      {
+        return false;
+      }
+      clearance = std::sqrt(d2) - margin;
+    }
+    scratch.ProvenTarget = target;
+    scratch.ProvenClearance = clearance;
   }
   auto& cones = scratch.Cones;
   cones.clear();
@@ -566,7 +598,7 @@ std::array<Sphere, 3> AtlasPolicy::FallbackSpheres(
   return { candidates[order[0]], candidates[order[1]], candidates[order[2]] };
 }
 
-void AtlasPolicy::Merged(MedialEdgeCollapse&, Index a, Index b, CollapseScratch& scratch)
+void AtlasPolicy::Merged(MedialEdgeCollapse& mesh, Index a, Index b, CollapseScratch& scratch)
 {
   // Atlas and its quadric: Q(A u B) = Q(A) + Q(B) - Q(A n B).
   auto& atlas = scratch.Indices;
@@ -586,6 +618,19 @@ void AtlasPolicy::Merged(MedialEdgeCollapse&, Index a, Index b, CollapseScratch&
   std::vector<Index>().swap(this->Atlas[b]);
   this->AnyInvaginated[a] = this->AnyInvaginated[a] || this->AnyInvaginated[b];
   this->UpdateFeature(a);
+  if (!this->Clearance.empty())
+  {
+    // The merged ball's bound: proved for it, or carried over from the two
+    // it replaces.
+    const Sphere& s = mesh.SphereOf(a);
+    const Point3 c{ s[0], s[1], s[2] };
+    double value = std::max(this->ClearanceAt(a, c), this->ClearanceAt(b, c));
+    if (scratch.ProvenClearance >= 0.0 && scratch.ProvenTarget == s)
+    {
+      value = std::max(value, scratch.ProvenClearance);
+    }
+    this->Clearance[a] = { c, value >= 0.0 ? value : -1.0 };
+  }
 }
 
 // Eq. 17: a feature vertex moves onto its sharp edge with r = 0.

@@ -9,6 +9,7 @@
 #define medialaxis_AtlasPolicy_h
 
 #include "Geometry/KdTree.h"
+#include "Geometry/Vec3.h"
 #include "Simplification/AtlasSimplifier.h"
 #include "Simplification/EdgeCollapse.h"
 #include "Simplification/SphereQuadric.h"
@@ -121,6 +122,23 @@ private:
   std::vector<SphereQuadric> AtlasQuadric; // regular cells of the Atlas, each once
   std::vector<char> Feature;
   std::vector<char> AnyInvaginated; // some cell of the Atlas is invaginated
+  // Per vertex, with error bounds: no site is nearer to Centre than Value
+  // (-1: nothing known), proved where a merged sphere was placed. The sites
+  // stay put, so a bound holds at its point whatever the vertex does next,
+  // and gives D(c) >= Value - |c - Centre| anywhere else (the distance to
+  // the nearest site is 1-Lipschitz): most merged balls are then known to
+  // be clear without a search.
+  struct SiteClearanceBound
+  {
+    Point3 Centre{ 0, 0, 0 };
+    double Value = -1.0;
+  };
+  std::vector<SiteClearanceBound> Clearance;
+  double ClearanceAt(Index v, const Point3& c) const
+  {
+    const SiteClearanceBound& k = this->Clearance[v];
+    return k.Value < 0.0 ? -HUGE_VAL : k.Value - std::sqrt(Distance2(c, k.Centre));
+  }
 };
 }
 

@@ -272,6 +272,11 @@ struct AtlasMedialMesh
   std::vector<Index> AtlasOffsets{ 0 };
   std::vector<Index> AtlasSites;
   std::vector<std::uint8_t> FeatureVertex; // per vertex (output only)
+  /// Per vertex (input only, optional): a lower bound of the distance from
+  /// its centre to the nearest site, -1 where unknown (the Voronoi stage's
+  /// SiteClearance). The error bands' test of balls reaching out of the
+  /// surface then skips the search where the bound decides; same result.
+  std::vector<double> SiteClearance;
 };
 
 /// The collapse counts (see EdgeCollapseCounts; QueueInitialisationSeconds

@@ -100,6 +100,11 @@ struct CollapseScratch
   std::vector<Index> Indices;
   std::vector<ConePrimitive> Cones;
   std::vector<SlabPrimitive> Slabs;
+  // The sphere a policy last proved clear of the surface samples by
+  // ProvenClearance (a lower bound of the distance from its centre to the
+  // nearest one; -1: none), for the collapse that places it.
+  Sphere ProvenTarget{};
+  double ProvenClearance = -1.0;
   // For the validity checks, reused to spare allocations on every collapse.
   std::vector<std::pair<std::array<Index, 3>, Index>> FaceKeys;
   std::vector<Index> MergedAway, MergedNeighbours;

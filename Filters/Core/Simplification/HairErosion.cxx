@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <deque>
-#include <tuple>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 namespace medialaxis
 {
@@ -15,22 +18,25 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 
-// The longest distance between two sites shared by the Atlases of a
-// triangle's three vertices (-1 when fewer than two are shared).
-double DualSpan(
-  const AtlasMedialMesh& mesh, const std::array<Index, 3>& t, const std::vector<Point3>& sites)
+// The sorted intersection of the sorted ranges [a0, a1) and [b0, b1) into
+// out (the Atlases are short: a few sites each).
+template <typename A, typename B>
+void Intersect(A a0, A a1, B b0, B b1, std::vector<Index>& out)
 {
-  auto atlas = [&mesh](Index v)
-  {
-    return std::make_pair(mesh.AtlasSites.begin() + mesh.AtlasOffsets[v],
-      mesh.AtlasSites.begin() + mesh.AtlasOffsets[v + 1]);
-  };
-  std::vector<Index> ab, common;
-  const auto [a0, a1] = atlas(t[0]);
-  const auto [b0, b1] = atlas(t[1]);
-  const auto [c0, c1] = atlas(t[2]);
-  std::set_intersection(a0, a1, b0, b1, std::back_inserter(ab));
-  std::set_intersection(ab.begin(), ab.end(), c0, c1, std::back_inserter(common));
+  out.clear();
+  std::set_intersection(a0, a1, b0, b1, std::back_inserter(out));
+}
+
+// The longest distance between two sites shared by the Atlases of a
+// triangle's three vertices (-1 when fewer than two are shared). `ab` and
+// `common` are scratch.
+double DualSpan(const AtlasMedialMesh& mesh, const std::array<Index, 3>& t,
+  const std::vector<Point3>& sites, std::vector<Index>& ab, std::vector<Index>& common)
+{
+  const auto begin = [&mesh](Index v) { return mesh.AtlasSites.begin() + mesh.AtlasOffsets[v]; };
+  const auto end = [&mesh](Index v) { return mesh.AtlasSites.begin() + mesh.AtlasOffsets[v + 1]; };
+  Intersect(begin(t[0]), end(t[0]), begin(t[1]), end(t[1]), ab);
+  Intersect(ab.begin(), ab.end(), begin(t[2]), end(t[2]), common);
   double span = -1.0;
   for (std::size_t i = 0; i < common.size(); ++i)
   {
@@ -40,6 +46,24 @@ double DualSpan(
     }
   }
   return span;
+}
+
+// One side of a triangle or a line of the mesh, keyed by its sorted ends.
+struct EdgeUse
+{
+  std::uint64_t Key; // min << 32 | max
+  std::int32_t Face; // -1: a line
+  std::int32_t Side; // the triangle's side k (from corner k to k + 1)
+  bool operator<(const EdgeUse& o) const
+  {
+    return Key != o.Key ? Key < o.Key : (Face != o.Face ? Face < o.Face : Side < o.Side);
+  }
+};
+
+std::uint64_t EdgeKey(Index u, Index v)
+{
+  return static_cast<std::uint64_t>(std::min(u, v)) << 32 |
+    static_cast<std::uint64_t>(std::max(u, v));
 }
 }
 
@@ -56,84 +80,99 @@ HairErosionResult ErodeHair(
   // The chord p - q subtends the angle at a ball's centre when |p - q| =
   // 2 r sin(angle / 2).
   const double chord = 2.0 * std::sin(0.5 * std::min(angleDegrees, 180.0) * Pi / 180.0);
-  // Every distinct edge, face edges first: (min, max, face or -1).
-  std::vector<std::tuple<Index, Index, Index>> halfEdges;
-  halfEdges.reserve(3 * nf + m.Edges.size());
+  // Every distinct edge, numbered in the order of its sorted ends; on each,
+  // its line (if any) then its faces in increasing order. Unique sort keys:
+  // the parallel sort gives the same order at any thread count.
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * nf + m.Edges.size());
   for (std::size_t f = 0; f < nf; ++f)
   {
     const auto& t = m.Faces[f];
     for (int k = 0; k < 3; ++k)
     {
-      const Index u = t[k], v = t[(k + 1) % 3];
-      halfEdges.emplace_back(std::min(u, v), std::max(u, v), static_cast<Index>(f));
+      uses.push_back({ EdgeKey(t[k], t[(k + 1) % 3]), static_cast<std::int32_t>(f), k });
     }
   }
   for (const auto& e : m.Edges)
   {
-    halfEdges.emplace_back(std::min(e[0], e[1]), std::max(e[0], e[1]), -1);
+    uses.push_back({ EdgeKey(e[0], e[1]), -1, 0 });
   }
-  std::sort(halfEdges.begin(), halfEdges.end());
+  tbb::parallel_sort(uses.begin(), uses.end());
   std::vector<std::array<Index, 2>> edges;
   std::vector<int> faceCount;            // alive faces on each edge
   std::vector<char> edgeAlive, erodible; // erodible: not a line of the input
   std::vector<std::array<Index, 3>> faceEdges(nf);
   std::vector<Index> edgeFaceStart{ 0 }, edgeFaces; // every face of each edge
-  for (std::size_t i = 0; i < halfEdges.size();)
+  edgeFaces.reserve(3 * nf);
+  for (std::size_t i = 0; i < uses.size();)
   {
-    std::size_t j = i;
     const Index id = static_cast<Index>(edges.size());
     int faces = 0;
-    while (j < halfEdges.size() && std::get<0>(halfEdges[j]) == std::get<0>(halfEdges[i]) &&
-      std::get<1>(halfEdges[j]) == std::get<1>(halfEdges[i]))
+    std::size_t j = i;
+    for (; j < uses.size() && uses[j].Key == uses[i].Key; ++j)
     {
-      const Index f = std::get<2>(halfEdges[j]);
-      if (f >= 0)
+      if (uses[j].Face >= 0)
       {
-        const auto& t = m.Faces[f];
-        const Index u = std::get<0>(halfEdges[j]), v = std::get<1>(halfEdges[j]);
-        for (int k = 0; k < 3; ++k)
-        {
-          if (std::min(t[k], t[(k + 1) % 3]) == u && std::max(t[k], t[(k + 1) % 3]) == v)
-          {
-            faceEdges[f][k] = id;
-          }
-        }
-        edgeFaces.push_back(f);
+        faceEdges[uses[j].Face][uses[j].Side] = id;
+        edgeFaces.push_back(uses[j].Face);
         ++faces;
       }
-      ++j;
     }
-    edges.push_back({ std::get<0>(halfEdges[i]), std::get<1>(halfEdges[i]) });
+    edges.push_back(
+      { static_cast<Index>(uses[i].Key >> 32), static_cast<Index>(uses[i].Key & 0xffffffffu) });
     faceCount.push_back(faces);
     edgeAlive.push_back(1);
     erodible.push_back(faces > 0 ? 1 : 0);
     edgeFaceStart.push_back(static_cast<Index>(edgeFaces.size()));
     i = j;
   }
+  std::vector<EdgeUse>().swap(uses);
   std::vector<int> degree(nv, 0); // alive edges at each vertex
-  std::vector<std::vector<Index>> vertexEdges(nv);
-  for (std::size_t e = 0; e < edges.size(); ++e)
+  // Each vertex's edges in increasing order (compressed rows).
+  std::vector<Index> vertexEdgeStart(nv + 1, 0), vertexEdges(2 * edges.size());
+  for (const auto& e : edges)
   {
-    for (Index v : edges[e])
+    ++degree[e[0]];
+    ++degree[e[1]];
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    vertexEdgeStart[v + 1] = vertexEdgeStart[v] + degree[v];
+  }
+  {
+    std::vector<Index> fill(vertexEdgeStart.begin(), vertexEdgeStart.end() - 1);
+    for (std::size_t e = 0; e < edges.size(); ++e)
     {
-      ++degree[v];
-      vertexEdges[v].push_back(static_cast<Index>(e));
+      for (Index v : edges[e])
+      {
+        vertexEdges[fill[v]++] = static_cast<Index>(e);
+      }
     }
   }
   std::vector<char> hair(nf, 0), faceAlive(nf, 1), vertexAlive(nv, 1);
-  for (std::size_t f = 0; f < nf; ++f)
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nf, 4096),
+    [&](const tbb::blocked_range<std::size_t>& range)
+    {
+      std::vector<Index> ab, common;
+      for (std::size_t f = range.begin(); f != range.end(); ++f)
+      {
+        const auto& t = m.Faces[f];
+        const double span = DualSpan(mesh, t, sites, ab, common);
+        const double radius = std::max({ m.Radii[t[0]], m.Radii[t[1]], m.Radii[t[2]] });
+        hair[f] = span >= 0.0 && span < chord * radius ? 1 : 0;
+      }
+    });
+  // The Atlases as given, except for the vertices a line end was collapsed
+  // into (merged) or from (emptied).
+  std::vector<std::vector<Index>> merged(nv);
+  std::vector<char> ownAtlas(nv, 0);
+  const auto atlasBegin = [&](Index v)
+  { return ownAtlas[v] ? merged[v].data() : mesh.AtlasSites.data() + mesh.AtlasOffsets[v]; };
+  const auto atlasEnd = [&](Index v)
   {
-    const auto& t = m.Faces[f];
-    const double span = DualSpan(mesh, t, sites);
-    const double radius = std::max({ m.Radii[t[0]], m.Radii[t[1]], m.Radii[t[2]] });
-    hair[f] = span >= 0.0 && span < chord * radius ? 1 : 0;
-  }
-  std::vector<std::vector<Index>> atlas(nv);
-  for (std::size_t v = 0; v < nv; ++v)
-  {
-    atlas[v].assign(mesh.AtlasSites.begin() + mesh.AtlasOffsets[v],
-      mesh.AtlasSites.begin() + mesh.AtlasOffsets[v + 1]);
-  }
+    return ownAtlas[v] ? merged[v].data() + merged[v].size()
+                       : mesh.AtlasSites.data() + mesh.AtlasOffsets[v + 1];
+  };
 
   std::deque<Index> faceQueue, edgeQueue;
   for (std::size_t f = 0; f < nf; ++f)
@@ -161,14 +200,16 @@ HairErosionResult ErodeHair(
         --degree[w];
         vertexAlive[v] = 0;
         ++result.RemovedVertices;
-        std::vector<Index> merged;
-        std::set_union(atlas[w].begin(), atlas[w].end(), atlas[v].begin(), atlas[v].end(),
-          std::back_inserter(merged));
-        atlas[w].swap(merged);
-        std::vector<Index>().swap(atlas[v]);
-        for (Index next : vertexEdges[w])
+        std::vector<Index> both;
+        std::set_union(
+          atlasBegin(w), atlasEnd(w), atlasBegin(v), atlasEnd(v), std::back_inserter(both));
+        merged[w].swap(both);
+        ownAtlas[w] = 1;
+        std::vector<Index>().swap(merged[v]);
+        ownAtlas[v] = 1;
+        for (Index k = vertexEdgeStart[w]; k < vertexEdgeStart[w + 1]; ++k)
         {
-          edgeQueue.push_back(next);
+          edgeQueue.push_back(vertexEdges[k]);
         }
         return;
       }
@@ -268,11 +309,15 @@ HairErosionResult ErodeHair(
     newId[v] = static_cast<Index>(out.Mesh.Centers.size());
     out.Mesh.Centers.push_back(m.Centers[v]);
     out.Mesh.Radii.push_back(m.Radii[v]);
-    out.AtlasSites.insert(out.AtlasSites.end(), atlas[v].begin(), atlas[v].end());
+    out.AtlasSites.insert(out.AtlasSites.end(), atlasBegin(v), atlasEnd(v));
     out.AtlasOffsets.push_back(static_cast<Index>(out.AtlasSites.size()));
     if (!mesh.FeatureVertex.empty())
     {
       out.FeatureVertex.push_back(mesh.FeatureVertex[v]);
+    }
+    if (mesh.SiteClearance.size() == nv)
+    {
+      out.SiteClearance.push_back(mesh.SiteClearance[v]);
     }
   }
   for (std::size_t f = 0; f < nf; ++f)

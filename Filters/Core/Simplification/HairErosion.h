@@ -34,7 +34,8 @@ struct HairErosionResult
 /// `angleDegrees` at the centre of the largest of its three balls (|p - q| <
 /// 2 r sin(angle / 2)), while they have a free edge; then the dangling
 /// edges so made. A vertex left without a simplex gives its Atlas to the
-/// vertex it was collapsed into. Deterministic (one thread).
+/// vertex it was collapsed into. The same at any thread count (the
+/// collapses run on one thread).
 HairErosionResult ErodeHair(
   AtlasMedialMesh& mesh, const std::vector<Point3>& sites, double angleDegrees);
 }

@@ -13,9 +13,11 @@
 #include "ToolSupport.h"
 #include "UdfCommand.h"
 #include "vtkAtlasMedialAxisSimplifier.h"
+#include "vtkCurveSkeletonWriter.h"
 #include "vtkErrorEventText.h"
 #include "vtkFilletDetector.h"
 #include "vtkMedialAxisWriter.h"
+#include "vtkMedialCurveSkeleton.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkMedialReconstructionError.h"
 #include "vtkMedialSkeletalDiagram.h"
@@ -382,10 +384,39 @@ int main(int argc, char** argv)
     WriteVtp(diagram->GetReconstruction(), reconstructionPath);
     written.push_back(reconstructionPath);
   }
+  double curveSeconds = 0.0;
+  vtkNew<vtkMedialCurveSkeleton> curve;
+  if (o.CurveSkeleton)
+  {
+    curve->SetInputConnection(0, validator->GetOutputPort());
+    curve->SetInputDataObject(1, mat);
+    if (!UpdateStage(curve, "curve skeleton", nullptr, curveSeconds))
+    {
+      return ComputationFailed;
+    }
+    WriteOutputs(curve, { "curve_skeleton.vtp", "segmentation.vtp" }, dir, written);
+    for (const char* name : { "curve_skeleton.swc", "curve_skeleton.json" })
+    {
+      vtkNew<vtkCurveSkeletonWriter> writer;
+      writer->SetInputData(curve->GetSkeleton());
+      writer->SetFileName((dir / name).string().c_str());
+      const std::string header = "curve skeleton of " + o.Input + "\nmedial-axis " +
+        MEDIALAXIS_VERSION + "\nunits: those of the input mesh";
+      writer->SetHeader(header.c_str());
+      if (!writer->Write())
+      {
+        std::cerr << "medial-axis: " << writer->GetErrorMessage() << "\n";
+        return ComputationFailed;
+      }
+      written.push_back((dir / name).string());
+    }
+  }
   if (!o.Screenshot.empty())
   {
+    vtkPolyData* shown =
+      o.CurveSkeleton ? curve->GetSkeleton() : (o.MidSurface ? midSurface->GetOutput() : mat);
     const std::string problem = medialaxis::WriteScreenshot(o.Screenshot, validator->GetOutput(),
-      o.MidSurface ? midSurface->GetOutput() : mat, o.Fillets ? fillets->GetOutput(1) : nullptr,
+      shown, o.Fillets ? fillets->GetOutput(1) : nullptr,
       o.Fillets ? fillets->GetOutput(0) : nullptr, 1200, 900);
     if (!problem.empty())
     {
@@ -517,6 +548,14 @@ int main(int argc, char** argv)
     }
     std::cout << "\n";
   }
+  if (o.CurveSkeleton)
+  {
+    vtkPolyData* skeleton = curve->GetSkeleton();
+    std::cout << "  curve skeleton: " << FieldValue(skeleton, "Nodes") << " nodes, "
+              << FieldValue(skeleton, "Branches") << " branches, "
+              << FieldValue(skeleton, "Junctions") << " junctions, "
+              << FieldValue(skeleton, "CycleRank") << " loops\n";
+  }
   for (const std::string& path : written)
   {
     std::cout << "  wrote " << path << "\n";
@@ -589,7 +628,8 @@ int main(int argc, char** argv)
          << ", \"Envelope\": " << envelopeSeconds << ", \"Fillets\": " << filletSeconds
          << ", \"Structure\": " << structureSeconds << ", \"MidSurface\": " << midSurfaceSeconds
          << ", \"SkeletalDiagram\": " << diagramSeconds << ", \"Error\": " << errorSeconds
-         << ", \"SkeletalDiagramError\": " << diagramErrorSeconds << ", \"wall\": " << seconds
+         << ", \"SkeletalDiagramError\": " << diagramErrorSeconds
+         << ", \"CurveSkeleton\": " << curveSeconds << ", \"wall\": " << seconds
          << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
          << ",\n  \"counts\": {\"sites\": " << FieldValue(mat, "Sites")
          << ", \"initial_vertices\": " << FieldValue(mat, "InitialVertices")
@@ -678,6 +718,20 @@ int main(int argc, char** argv)
              << ", \"envelope_to_surface\": " << diagramDistances.ToSurface
              << ", \"mean_two_sided\": " << diagramDistances.Mean
              << ", \"mean_two_sided_percent\": " << diagramDistances.MeanPercent << "}";
+      }
+      json << "}";
+    }
+    if (o.CurveSkeleton)
+    {
+      vtkPolyData* skeleton = curve->GetSkeleton();
+      json << ",\n  \"curve_skeleton\": {";
+      const char* counts[] = { "Nodes", "Branches", "Junctions", "Ends", "CycleRank", "Components",
+        "PrunedBranches", "UncollapsedTriangles" };
+      const char* keys[] = { "nodes", "branches", "junctions", "ends", "cycle_rank", "components",
+        "pruned_branches", "uncollapsed_triangles" };
+      for (int k = 0; k < 8; ++k)
+      {
+        json << (k ? ", " : "") << JsonString(keys[k]) << ": " << FieldValue(skeleton, counts[k]);
       }
       json << "}";
     }

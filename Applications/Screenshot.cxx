@@ -74,8 +74,25 @@ std::string WriteScreenshot(const std::string& path, vtkPolyData* surface, vtkPo
   surfaceActor->GetProperty()->SetOpacity(0.3);
   renderer->AddActor(surfaceActor);
 
+  double bounds[6];
+  shown->GetBounds(bounds);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
   vtkNew<vtkPolyDataMapper> medialMapper;
-  medialMapper->SetInputData(medial);
+  // A curve skeleton (lines only) as tubes.
+  vtkNew<vtkTubeFilter> medialTubes;
+  if (medial->GetNumberOfPolys() == 0 && medial->GetNumberOfLines() > 0)
+  {
+    medialTubes->SetInputData(medial);
+    medialTubes->SetRadius(0.006 * diagonal);
+    medialTubes->SetNumberOfSides(12);
+    medialMapper->SetInputConnection(medialTubes->GetOutputPort());
+  }
+  else
+  {
+    medialMapper->SetInputData(medial);
+  }
   // A medial mesh by its radii, a mid-surface by its thickness.
   for (const char* name : { "Radius", "Thickness" })
   {
@@ -95,11 +112,6 @@ std::string WriteScreenshot(const std::string& path, vtkPolyData* surface, vtkPo
   medialActor->SetMapper(medialMapper);
   renderer->AddActor(medialActor);
 
-  double bounds[6];
-  shown->GetBounds(bounds);
-  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
   vtkNew<vtkTubeFilter> tubes;
   vtkNew<vtkPolyDataMapper> lineMapper;
   vtkNew<vtkActor> lineActor;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Offscreen picture of a result of the medial-axis tool: the input surface
 // (semi-transparent, fillet faces coloured when given), the medial mesh
-// coloured by radius (or a mid-surface by thickness) and the fillet centre
-// lines.
+// coloured by radius (or a mid-surface by thickness, or a curve skeleton as
+// tubes by radius) and the fillet centre lines.
 #ifndef medialaxis_Screenshot_h
 #define medialaxis_Screenshot_h
 

@@ -156,6 +156,13 @@ Options:
                         surface); the report gives the counts and the error
                         reached (with --error also the reconstruction's
                         two-sided distances)
+  --curve-skeleton      a curve skeleton from the MAT: centre lines with the
+                        inscribed radius at every node and one loop per
+                        handle; write curve_skeleton.vtp (point data Radius,
+                        NodeType, BranchId), curve_skeleton.swc (SWC, loops
+                        broken and listed), curve_skeleton.json (the graph)
+                        and segmentation.vtp (the surface with point data
+                        BranchId); the report gives the counts and the loops
   --error               measure the two-sided Hausdorff distance between the
                         surface and the envelope (% of the bounding-box
                         diagonal) and write distance.vtp (the surface with
@@ -163,7 +170,8 @@ Options:
   --screenshot FILE     render the result offscreen into a PNG: the surface
                         (semi-transparent, fillet faces coloured with
                         --fillets), the MAT coloured by radius (with
-                        --mid-surface the mid-surface by thickness instead)
+                        --mid-surface the mid-surface by thickness, with
+                        --curve-skeleton the skeleton by radius instead)
                         and the fillet centre lines; without an X display the tool runs
                         itself under xvfb-run (Debian package xvfb)
   --report FILE         write a JSON report: parameters, per-stage times, peak
@@ -458,6 +466,10 @@ std::string Parse(int argc, char** argv, Options& o, bool& help, bool& version)
         return arg + " must be a whole number of elements from 1 to 1000000";
       }
       o.SkeletalDiagram = static_cast<int>(number);
+    }
+    else if (arg == "--curve-skeleton")
+    {
+      o.CurveSkeleton = true;
     }
     else if (arg == "--error")
     {

@@ -37,7 +37,8 @@ struct Options
   double SpikeRepair = 10.0;
   int Seed = 0, Threads = 0;
   int SkeletalDiagram = 0; // most elements; 0: none
-  bool Udf = false;        // INPUT is an unsigned distance field
+  bool CurveSkeleton = false;
+  bool Udf = false; // INPUT is an unsigned distance field
   medialaxis::tool::UdfOptions UdfRun;
 };
 

@@ -4,7 +4,7 @@
 # of an organic model (the Stanford Bunny from ../shared/data/meshes) and of
 # a generated CAD-like part with its fillets highlighted (README), and the
 # mid-surfaces of the thin-walled CAD meshes of ../shared/data/meshes
-# (docs/benchmark-results.md), and the plugin in the ParaView GUI
+# (docs/benchmark-results.md), curve skeletons (docs/methods.md), and the plugin in the ParaView GUI
 # (docs/paraview.md).
 #   scripts/make-pictures.sh
 set -euo pipefail
@@ -27,6 +27,11 @@ part=$(ls -t "$work"/part/*_prepared.vtp | head -n 1)
 for mesh in abc_00000125.obj abc_00000068.obj casting.off cup.off; do
   "$tool" --preset cad --mid-surface --quiet --screenshot "$images/mid-surface-${mesh%.*}.png" \
     "$meshes/$mesh" "$work/${mesh%.*}"
+done
+# Curve skeletons inside their surfaces (docs/methods.md): two organic shapes and the vessel.
+for mesh in armadillo.off fertility.off vessel.off; do
+  "$tool" --preset organic --curve-skeleton --quiet \
+    --screenshot "$images/curve-skeleton-${mesh%.*}.png" "$meshes/$mesh" "$work/${mesh%.*}"
 done
 # The plugin in the real ParaView GUI (docs/paraview.md, README): the whole
 # window, drawn under Xvfb.

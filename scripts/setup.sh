@@ -26,8 +26,10 @@ for arg in "$@"; do
   esac
 done
 
+# python3-networkx: medialaxis.skeleton_graph returns curve skeletons as networkx graphs.
 packages=(cmake ninja-build g++ ccache pkg-config libvtk9-dev python3-vtk9 libcgal-dev
-  libeigen3-dev libtbb-dev liblbfgspp-dev libnanoflann-dev libgtest-dev xvfb xauth)
+  libeigen3-dev libtbb-dev liblbfgspp-dev libnanoflann-dev libgtest-dev xvfb xauth
+  python3-networkx)
 if [ "$with_paraview" = 1 ]; then
   # Never python3-paraview: it conflicts with python3-vtk9 (see make-paraview-sdk.sh).
   # mpiexec and mpi4py: medial-axis-batch runs pvbatch on MPI ranks.

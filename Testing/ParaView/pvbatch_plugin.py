@@ -226,6 +226,19 @@ check(msd.GetDataInformation(1).GetNumberOfDataSets() == msd_vertices
       "one primitive per element")
 check(msd_skeleton.GetFieldData().GetArray("FailedElements").GetValue(0) == 0,
       "every element of the dumbbell's diagram has a primitive")
+# The dumbbell's curve skeleton: one branch along its axis, saved as SWC.
+curve = CurveSkeleton(Input=bell, MedialAxis=OutputPort(bell_mat, 0))
+curve.UpdatePipeline()
+curve_skeleton = servermanager.Fetch(curve, idx=0)
+check(curve_skeleton.GetFieldData().GetArray("CycleRank").GetValue(0) == 0 and
+      curve_skeleton.GetNumberOfLines() == 1,
+      "dumbbell skeleton: %d lines" % curve_skeleton.GetNumberOfLines())
+check(servermanager.Fetch(curve, idx=1).GetPointData().GetArray("BranchId") is not None,
+      "no segmentation")
+SaveData("dumbbell.swc", proxy=curve)
+with open("dumbbell.swc") as swc:
+    rows = [line for line in swc if line.strip() and not line.startswith("#")]
+check(len(rows) == curve_skeleton.GetNumberOfPoints(), "SWC rows: %d" % len(rows))
 # An open surface from its unsigned distance: a disk has one boundary.
 disk = Triangulate(Input=Disk(InnerRadius=0.0, OuterRadius=1.0, CircumferentialResolution=64,
                               RadialResolution=16))

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Generated solids of high genus, each the zero level set of a signed
 distance sampled on a grid: plates with 8 and 20 holes of varied size, a
-chain of 6 linked (disjoint) tori and a thick trefoil knot."""
+chain of 6 linked (disjoint) tori, a thick trefoil knot and a double torus."""
 import math
 
 import numpy as np
@@ -87,5 +87,14 @@ def trefoil(n=80):
     return level_set(f, (-1.2, 1.2, -1.2, 1.2, -0.6, 0.6), n)
 
 
+def double_torus(n=100):
+    """Two tori (radius 0.4, tube 0.15) side by side, overlapping: genus 2."""
+    def f(x, y, z):
+        left = np.hypot(np.hypot(x + 0.45, y) - 0.4, z) - 0.15
+        right = np.hypot(np.hypot(x - 0.45, y) - 0.4, z) - 0.15
+        return np.minimum(left, right)
+    return level_set(f, (-1.1, 1.1, -0.65, 0.65, -0.25, 0.25), n)
+
+
 SHAPES = {"plate with 8 holes": lambda: plate(8), "plate with 20 holes": lambda: plate(20),
-          "chain of 6 tori": tori_chain, "trefoil tube": trefoil}
+          "chain of 6 tori": tori_chain, "trefoil tube": trefoil, "double torus": double_torus}

@@ -395,7 +395,8 @@ class CommandLineTest(unittest.TestCase):
         out = self.path("out")
         report = self.path("report.json")
         result = run("--samples", "5000", "--target", "100", "--skeletal-diagram", "20",
-                     "--error", "--report", report, self.path("dumbbell.vtp"), out)
+                     "--curve-skeleton", "--error", "--report", report,
+                     self.path("dumbbell.vtp"), out)
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("skeletal diagram:", result.stdout)
         with open(report) as f:
@@ -432,6 +433,33 @@ class CommandLineTest(unittest.TestCase):
                         diagram["hausdorff"]["two_sided_percent"])
         self.assertGreater(diagram["continuous_parameters"], 3 * diagram["vertices"])
         self.assertGreater(data["hausdorff"]["mean_two_sided"], 0.0)
+        # The curve skeleton: one branch along the axis, no loop, as files
+        # and as a graph.
+        curve = data["curve_skeleton"]
+        self.assertEqual((curve["cycle_rank"], curve["components"]), (0, 1))
+        self.assertIn("curve skeleton:", result.stdout)
+        with open(os.path.join(out, "curve_skeleton.swc")) as f:
+            nodes = [line.split() for line in f if line.strip() and not line.startswith("#")]
+        self.assertEqual(len(nodes), curve["nodes"])
+        self.assertEqual(sum(1 for n in nodes if n[6] == "-1"), 1)
+        self.assertTrue(all(float(n[5]) > 0.0 for n in nodes))
+        with open(os.path.join(out, "curve_skeleton.json")) as f:
+            self.assertEqual(len(json.load(f)["nodes"]), curve["nodes"])
+        lines = vtk.vtkXMLPolyDataReader()
+        lines.SetFileName(os.path.join(out, "curve_skeleton.vtp"))
+        lines.Update()
+        try:
+            import networkx
+        except ImportError:
+            with self.assertRaisesRegex(ImportError, "python3-networkx"):
+                medialaxis.skeleton_graph(lines.GetOutput())
+        else:
+            graph = medialaxis.skeleton_graph(lines.GetOutput())
+            self.assertEqual(graph.number_of_nodes(), curve["nodes"])
+            self.assertTrue(networkx.is_tree(graph))
+            self.assertGreater(graph.nodes[0]["radius"], 0.0)
+        with self.assertRaisesRegex(ValueError, "not a curve skeleton"):
+            medialaxis.skeleton_graph(union.GetOutput())
         # A count that is no whole number is refused.
         refused = run("--skeletal-diagram", "0", self.path("dumbbell.vtp"), out)
         self.assertNotEqual(refused.returncode, 0)

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The medial axis of generated solids of high genus, at the organic preset
 (10,000 samples, 1,000 spheres), has the solid's topology: Euler
-characteristic 1 - genus per piece, summed."""
+characteristic 1 - genus per piece, summed; its curve skeleton has one loop
+per handle and one component per piece, every node inside."""
 import unittest
 
 import vtk
@@ -42,6 +43,21 @@ class HighGenusTest(unittest.TestCase):
                 chi = repair_shapes.euler_characteristic(medial.GetOutput())
                 print("%s: %d pieces, solid %d, medial axis %d" % (name, pieces, expected, chi))
                 self.assertEqual(chi, expected)
+                skeleton = medialaxis.vtkMedialCurveSkeleton()
+                skeleton.SetInputData(0, surface)
+                skeleton.SetInputConnection(1, medial.GetOutputPort(0))
+                self.assertEqual(errors_of(skeleton), "")
+                counts = skeleton.GetSkeleton().GetFieldData()
+                loops = counts.GetArray("CycleRank").GetValue(0)
+                print("%s: curve skeleton with %d loops" % (name, loops))
+                self.assertEqual(loops, pieces - expected)  # the genus, summed
+                self.assertEqual(counts.GetArray("Components").GetValue(0), pieces)
+                inside = vtk.vtkSelectEnclosedPoints()
+                inside.SetInputData(skeleton.GetSkeleton())
+                inside.SetSurfaceData(surface)
+                inside.Update()
+                selected = inside.GetOutput().GetPointData().GetArray("SelectedPoints")
+                self.assertEqual(selected.GetRange()[0], 1)
 
 
 if __name__ == "__main__":

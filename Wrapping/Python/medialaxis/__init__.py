@@ -58,3 +58,46 @@ def set_distance_function(extractor, function, bounds):
 
     extractor.SetDistanceMethod(evaluate)
     extractor.SetFunctionBounds(*bounds)
+
+
+def skeleton_graph(skeleton):
+    """The curve skeleton (vtkMedialCurveSkeleton's output 0, a vtkPolyData)
+    as a networkx.Graph: a node per point with attributes position (x, y, z),
+    radius, type ("end", "regular" or "junction") and branch; an edge per
+    pair of consecutive points of a polyline with attribute length.
+
+    Needs networkx (Debian: python3-networkx); raises ImportError saying so
+    where it is missing and ValueError for a dataset that is no skeleton.
+    """
+    import math
+
+    points = skeleton.GetPoints() if skeleton is not None else None
+    data = skeleton.GetPointData() if skeleton is not None else None
+    radius = data.GetArray("Radius") if data is not None else None
+    if radius is None or skeleton.GetNumberOfPolys() > 0:
+        raise ValueError("not a curve skeleton: expected points with point data 'Radius' and "
+                         "polylines (vtkMedialCurveSkeleton's output 0)")
+    try:
+        import networkx
+    except ImportError as error:
+        raise ImportError("skeleton_graph needs networkx (Debian: apt-get install "
+                          "python3-networkx; pip: pip install networkx)") from error
+    kinds = data.GetArray("NodeType")
+    branch = data.GetArray("BranchId")
+    names = ("end", "regular", "junction")
+    graph = networkx.Graph()
+    for v in range(skeleton.GetNumberOfPoints()):
+        graph.add_node(v, position=tuple(points.GetPoint(v)),
+                       radius=radius.GetValue(v) if radius else None,
+                       type=names[int(kinds.GetValue(v))] if kinds else None,
+                       branch=int(branch.GetValue(v)) if branch else None)
+    lines = skeleton.GetLines()
+    ids = lines.GetConnectivityArray()
+    offsets = lines.GetOffsetsArray()
+    for c in range(lines.GetNumberOfCells()):
+        chain = [int(ids.GetValue(k))
+                 for k in range(int(offsets.GetValue(c)), int(offsets.GetValue(c + 1)))]
+        for a, b in zip(chain, chain[1:]):
+            if a != b:
+                graph.add_edge(a, b, length=math.dist(points.GetPoint(a), points.GetPoint(b)))
+    return graph

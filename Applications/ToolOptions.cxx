@@ -162,7 +162,8 @@ Options:
                         NodeType, BranchId), curve_skeleton.swc (SWC, loops
                         broken and listed), curve_skeleton.json (the graph)
                         and segmentation.vtp (the surface with point data
-                        BranchId); the report gives the counts and the loops
+                        NodeId and BranchId); the report gives the counts and
+                        the loops
   --error               measure the two-sided Hausdorff distance between the
                         surface and the envelope (% of the bounding-box
                         diagonal) and write distance.vtp (the surface with

@@ -523,8 +523,17 @@ def main():
     if args.doc:
         docs = os.path.join(ROOT, "docs")
         images = plots(results, os.path.join(docs, "images"))
-        with open(os.path.join(docs, "benchmark-results.md"), "w", encoding="utf-8") as f:
-            f.write(markdown(results, images))
+        page = os.path.join(docs, "benchmark-results.md")
+        # Sections other runs write (Benchmarks/curve_skeleton_report.py) stay.
+        kept = ""
+        if os.path.exists(page):
+            with open(page, encoding="utf-8") as f:
+                old = f.read()
+            begin, end = "<!-- curve skeletons: begin -->", "<!-- curve skeletons: end -->"
+            if begin in old and end in old:
+                kept = "\n" + old[old.index(begin):old.index(end) + len(end)] + "\n"
+        with open(page, "w", encoding="utf-8") as f:
+            f.write(markdown(results, images) + kept)
     print("suite done in %.0f s: %s/results.json and results.md" % (
         results["suite_seconds"], args.out))
     failed = [r["mesh"] for r in rows if "failed" in r]

@@ -70,6 +70,7 @@ int vtkMedialCurveSkeleton::RequestData(
   medialaxis::CurveSkeletonOptions options;
   options.PruneScale = this->PruneScale;
   options.SmoothingIterations = this->SmoothingIterations;
+  options.NodeSpacing = this->NodeSpacing;
   options.Progress = [this](double f)
   {
     this->UpdateProgress(0.9 * f);
@@ -90,15 +91,19 @@ int vtkMedialCurveSkeleton::RequestData(
   medialaxis::CurveSkeletonToPolyData(skeleton, skeletonOut);
 
   medialaxis::TriangleMeshToPolyData(surface, segmentation);
-  const std::vector<medialaxis::Index> part = medialaxis::SegmentSurface(skeleton, medial, surface);
-  vtkNew<vtkIdTypeArray> branch;
+  const std::vector<medialaxis::Index> node = medialaxis::SegmentSurface(skeleton, surface);
+  vtkNew<vtkIdTypeArray> branch, nodeId;
   branch->SetName("BranchId");
-  branch->SetNumberOfTuples(static_cast<vtkIdType>(part.size()));
-  for (std::size_t p = 0; p < part.size(); ++p)
+  branch->SetNumberOfTuples(static_cast<vtkIdType>(node.size()));
+  nodeId->SetName("NodeId");
+  nodeId->SetNumberOfTuples(static_cast<vtkIdType>(node.size()));
+  for (std::size_t p = 0; p < node.size(); ++p)
   {
-    branch->SetValue(static_cast<vtkIdType>(p), part[p]);
+    nodeId->SetValue(static_cast<vtkIdType>(p), node[p]);
+    branch->SetValue(static_cast<vtkIdType>(p), node[p] >= 0 ? skeleton.NodeBranch[node[p]] : -1);
   }
   segmentation->GetPointData()->AddArray(branch);
+  segmentation->GetPointData()->AddArray(nodeId);
   segmentation->GetPointData()->SetActiveScalars("BranchId");
   this->UpdateProgress(1.0);
   return 1;
@@ -109,4 +114,5 @@ void vtkMedialCurveSkeleton::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "PruneScale: " << this->PruneScale << "\n";
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
+  os << indent << "NodeSpacing: " << this->NodeSpacing << "\n";
 }

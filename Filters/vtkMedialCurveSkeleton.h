@@ -14,8 +14,9 @@
  * to a junction whose medial balls all lie in medial balls of the rest,
  * grown by PruneScale, are pruned: they stand for bumps, corners and rims of
  * the surface, not limbs. Nodes inside branches are smoothed without
- * leaving the solid, and each node's radius is its distance to the surface
- * (the largest ball centred there inside the solid).
+ * leaving the solid, edges longer than NodeSpacing times the local radius
+ * are split, and each node's radius is its distance to the surface (the
+ * largest ball centred there inside the solid).
  *
  * Inputs: port 0 the closed surface; port 1 its medial mesh (point data
  * `Radius`), e.g. vtkStructuralMedialAxis's output.
@@ -31,8 +32,9 @@
  * for the medial axis of a solid; a warning otherwise).
  *
  * Output 1: the surface (as prepared: closed, outward) with point data
- * `BranchId`: the branch of the node whose medial ball touches each point,
- * a segmentation of the surface into parts.
+ * `NodeId`, the node whose ball (radius `Radius`) comes nearest to each
+ * point (the nodes' correspondence), and `BranchId`, that node's branch: a
+ * segmentation of the surface into parts.
  *
  * vtkCurveSkeletonWriter writes output 0 as SWC or JSON.
  */
@@ -69,6 +71,15 @@ public:
   vtkGetMacro(SmoothingIterations, int);
   ///@}
 
+  ///@{
+  /// Edges longer than this times the larger distance to the surface at
+  /// their ends are split evenly (where the new nodes lie inside the solid),
+  /// so that each node's share of the surface is local. Default 1; 0 keeps
+  /// only the nodes the thinning left.
+  vtkSetClampMacro(NodeSpacing, double, 0.0, 100.0);
+  vtkGetMacro(NodeSpacing, double);
+  ///@}
+
   /// The skeleton (output 0) and the segmented surface (output 1).
   vtkPolyData* GetSkeleton() { return this->GetOutput(0); }
   vtkPolyData* GetSegmentation() { return this->GetOutput(1); }
@@ -82,6 +93,7 @@ protected:
 
   double PruneScale = 1.5;
   int SmoothingIterations = 10;
+  double NodeSpacing = 1.0;
 
 private:
   vtkMedialCurveSkeleton(const vtkMedialCurveSkeleton&) = delete;

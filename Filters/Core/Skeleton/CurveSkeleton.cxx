@@ -284,6 +284,71 @@ void ExtendEnds(WorkGraph& g, const std::vector<std::vector<Index>>& members,
   }
 }
 
+// Edges longer than `spacing` times the larger distance to the surface at
+// their ends are split evenly, where every new node lies inside the solid:
+// nodes then stand at most about that far apart, so that each one's share
+// of the surface is local.
+void Resample(WorkGraph& g, const TriangleLocator& locator, double spacing)
+{
+  if (!(spacing > 0.0))
+  {
+    return;
+  }
+  std::vector<std::array<Index, 2>> edges;
+  for (std::size_t a = 0; a < g.Alive.size(); ++a)
+  {
+    for (Index b : g.Adjacent[a])
+    {
+      if (static_cast<Index>(a) < b)
+      {
+        edges.push_back({ static_cast<Index>(a), b });
+      }
+    }
+  }
+  std::vector<Point3> inner;
+  for (const auto& [a, b] : edges)
+  {
+    const Point3 pa = g.Position[a], pb = g.Position[b];
+    const double step = spacing * std::min(locator.Distance(pa), locator.Distance(pb));
+    const double length = std::sqrt(Distance2(pa, pb));
+    if (!(step > 0.0) || length <= step)
+    {
+      continue;
+    }
+    const int pieces = static_cast<int>(std::ceil(length / step));
+    inner.clear();
+    for (int k = 1; k < pieces; ++k)
+    {
+      const double t = static_cast<double>(k) / pieces;
+      inner.push_back((1.0 - t) * pa + t * pb);
+    }
+    if (!std::all_of(
+          inner.begin(), inner.end(), [&](const Point3& p) { return locator.Inside(p); }))
+    {
+      continue;
+    }
+    g.Unlink(a, b);
+    Index previous = a;
+    for (const Point3& p : inner)
+    {
+      const Index added = static_cast<Index>(g.Position.size());
+      g.Position.push_back(p);
+      g.Adjacent.push_back({ previous });
+      g.Adjacent[previous].push_back(added);
+      g.Alive.push_back(1);
+      g.PrunedInto.push_back(-1);
+      g.WasJunction.push_back(0);
+      previous = added;
+    }
+    g.Adjacent[previous].push_back(b);
+    g.Adjacent[b].push_back(previous);
+  }
+  for (auto& list : g.Adjacent)
+  {
+    std::sort(list.begin(), list.end());
+  }
+}
+
 // Branches: chains between nodes of degree other than 2, then the loops
 // through none, then lone nodes.
 void TraceBranches(CurveSkeleton& s)
@@ -417,6 +482,7 @@ CurveSkeleton ComputeCurveSkeleton(
   Smooth(g, locator, options.SmoothingIterations);
 
   ExtendEnds(g, members, medial, locator);
+  Resample(g, locator, options.NodeSpacing);
 
   // The nodes left, renumbered in order.
   const std::size_t total = g.Alive.size();
@@ -462,36 +528,34 @@ CurveSkeleton ComputeCurveSkeleton(
   return out;
 }
 
-std::vector<Index> SegmentSurface(
-  const CurveSkeleton& skeleton, const MedialMesh& medial, const TriangleMesh& surface)
+std::vector<Index> SegmentSurface(const CurveSkeleton& skeleton, const TriangleMesh& surface)
 {
-  std::vector<Index> branch(surface.Points.size(), -1);
-  if (medial.NumberOfVertices() == 0 ||
-    skeleton.MedialVertexNode.size() != medial.NumberOfVertices())
+  std::vector<Index> node(surface.Points.size(), -1);
+  if (skeleton.Nodes.empty())
   {
-    return branch;
+    return node;
   }
-  const KdTree tree(medial.Centers);
+  // The node whose ball (radius: its distance to the surface) comes nearest
+  // to the point, among the 16 nearest nodes: a ball touches the surface
+  // where the node stands for it.
+  const KdTree tree(skeleton.Nodes);
   std::vector<std::uint32_t> ids;
   std::vector<double> d2;
   for (std::size_t p = 0; p < surface.Points.size(); ++p)
   {
     tree.Nearest(surface.Points[p], 16, ids, d2);
     double best = HUGE_VAL;
-    Index touching = -1;
     for (std::size_t k = 0; k < ids.size(); ++k)
     {
-      const double gap = std::sqrt(d2[k]) - medial.Radii[ids[k]];
-      if (gap < best || (gap == best && static_cast<Index>(ids[k]) < touching))
+      const double gap = std::sqrt(d2[k]) - skeleton.Radii[ids[k]];
+      if (gap < best || (gap == best && static_cast<Index>(ids[k]) < node[p]))
       {
         best = gap;
-        touching = static_cast<Index>(ids[k]);
+        node[p] = static_cast<Index>(ids[k]);
       }
     }
-    const Index node = touching >= 0 ? skeleton.MedialVertexNode[touching] : -1;
-    branch[p] = node >= 0 ? skeleton.NodeBranch[node] : -1;
   }
-  return branch;
+  return node;
 }
 
 std::string CheckMedialMeshOfSurface(const MedialMesh& medial, const TriangleMesh& surface)

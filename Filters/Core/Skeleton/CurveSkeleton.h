@@ -40,6 +40,10 @@ struct CurveSkeletonOptions
   /// moves half way to the mean of its two neighbours unless that would take
   /// it out of the solid).
   int SmoothingIterations = 10;
+  /// Edges longer than this times the larger distance to the surface at
+  /// their ends are split evenly (where the new nodes lie inside), so that
+  /// each node's share of the surface is local; 0 keeps the thinned nodes.
+  double NodeSpacing = 1.0;
   /// Fraction in [0, 1]; returning false stops the computation.
   std::function<bool(double)> Progress;
 };
@@ -80,11 +84,10 @@ struct CurveSkeleton
 CurveSkeleton ComputeCurveSkeleton(const MedialMesh& medial, const TriangleMesh& surface,
   const CurveSkeletonOptions& options = CurveSkeletonOptions());
 
-/// Per surface vertex, the branch it belongs to: that of the node of the
-/// medial ball it touches (the ball with the least |p - c| - r, among the 16
-/// nearest centres).
-std::vector<Index> SegmentSurface(
-  const CurveSkeleton& skeleton, const MedialMesh& medial, const TriangleMesh& surface);
+/// Per surface vertex, the node it belongs to: the node whose ball (its
+/// radius) comes nearest to it, least |p - x| - r among the 16 nearest
+/// nodes; -1 for an empty skeleton.
+std::vector<Index> SegmentSurface(const CurveSkeleton& skeleton, const TriangleMesh& surface);
 
 /// Why `medial` cannot be the medial mesh of `surface`, or empty: it must
 /// have vertices, most centres inside the surface, and radii near the

@@ -1,0 +1,232 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Curve skeletons against CGAL's mean-curvature-flow skeleton, in one run.
+
+For every organic mesh of ../shared/data/meshes (SOURCES.md): `medial-axis
+--curve-skeleton` at the organic preset (timed from the surface: reading,
+MAT and skeleton), and CGAL 5.5's extract_mean_curvature_flow_skeleton of the
+same prepared surface (default parameters; timed for the extraction alone).
+Per skeleton:
+
+- loops: the cycle rank (edges - nodes + components), against the genus;
+- centredness: per node with surface points in its correspondence (ours: the
+  points whose medial ball is the node's, output 1's NodeId; CGAL's: its
+  vertices' correspondence), |distance to the surface - mean distance to
+  those points| / diagonal, median and largest over the nodes: 0 for a node
+  as far from all of its points as from the nearest;
+- nodes outside the surface.
+
+Writes a Markdown table (and JSON) to --out; `--doc FILE` also replaces the
+section between the markers in FILE (docs/benchmark-results.md).
+
+    python3 Benchmarks/curve_skeleton_report.py [--meshes DIR] [--build DIR] [--out DIR]
+        [--doc docs/benchmark-results.md] [--only NAME ...]
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+BEGIN, END = "<!-- curve skeletons: begin -->", "<!-- curve skeletons: end -->"
+
+
+def build_mcf(build):
+    """The CGAL program, compiled once next to the build (CGAL is header-only;
+    it is no part of the library or its tests)."""
+    binary = os.path.join(build, "bin", "medialaxis-mcf-skeleton")
+    source = os.path.join(HERE, "McfSkeleton.cxx")
+    if not os.path.exists(binary) or os.path.getmtime(binary) < os.path.getmtime(source):
+        os.makedirs(os.path.dirname(binary), exist_ok=True)
+        subprocess.run(["g++", "-std=c++17", "-O2", "-DNDEBUG", "-frounding-math",
+                        "-I/usr/include/eigen3", "-DCGAL_EIGEN3_ENABLED", source, "-o", binary,
+                        "-lgmp", "-lmpfr"], check=True)
+    return binary
+
+
+def read_vtp(path):
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def write_off(surface, path):
+    points = vtk_to_numpy(surface.GetPoints().GetData())
+    polys = vtk_to_numpy(surface.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(points), len(polys)))
+        f.writelines("%.17g %.17g %.17g\n" % tuple(p) for p in points)
+        f.writelines("3 %d %d %d\n" % tuple(t) for t in polys)
+
+
+def measure(surface, nodes, edges, correspondence):
+    """Loops, centredness (median, largest, / diagonal) and nodes outside."""
+    distance = vtk.vtkImplicitPolyDataDistance()
+    distance.SetInput(surface)
+    b = surface.GetBounds()
+    diagonal = ((b[1] - b[0]) ** 2 + (b[3] - b[2]) ** 2 + (b[5] - b[4]) ** 2) ** 0.5
+    points = vtk_to_numpy(surface.GetPoints().GetData())
+    parent = list(range(len(nodes)))
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+    unique = {tuple(sorted(e)) for e in edges if e[0] != e[1]}
+    for a, c in unique:
+        parent[find(a)] = find(c)
+    components = sum(1 for v in range(len(nodes)) if find(v) == v)
+    off, outside = [], 0
+    for v, p in enumerate(nodes):
+        d = distance.EvaluateFunction(p)
+        outside += d > 0
+        if correspondence[v]:
+            mean = float(np.linalg.norm(points[correspondence[v]] - np.asarray(p), axis=1).mean())
+            off.append(abs(abs(d) - mean) / diagonal)
+    return {"loops": len(unique) - len(nodes) + components, "nodes": len(nodes),
+            "centred_median": statistics.median(off) if off else float("nan"),
+            "centred_max": max(off) if off else float("nan"), "outside": outside}
+
+
+def ours(tool, mesh, out):
+    start = time.monotonic()
+    result = subprocess.run([tool, "--preset", "organic", "--curve-skeleton", "--quiet",
+                             "--threads", "2", "--report", os.path.join(out, "report.json"),
+                             mesh, out], capture_output=True, text=True)
+    seconds = time.monotonic() - start
+    if result.returncode != 0:
+        raise RuntimeError(result.stderr.strip())
+    surface = read_vtp(os.path.join(out, "segmentation.vtp"))
+    skeleton = read_vtp(os.path.join(out, "curve_skeleton.vtp"))
+    nodes = [skeleton.GetPoint(i) for i in range(skeleton.GetNumberOfPoints())]
+    edges = []
+    lines = skeleton.GetLines()
+    ids, offsets = (vtk_to_numpy(lines.GetConnectivityArray()),
+                    vtk_to_numpy(lines.GetOffsetsArray()))
+    for c in range(lines.GetNumberOfCells()):
+        chain = ids[offsets[c]:offsets[c + 1]]
+        edges += [(int(a), int(b)) for a, b in zip(chain, chain[1:])]
+    node_of = vtk_to_numpy(surface.GetPointData().GetArray("NodeId"))
+    correspondence = [[] for _ in nodes]
+    for p, v in enumerate(node_of):
+        if v >= 0:
+            correspondence[v].append(p)
+    row = measure(surface, nodes, edges, correspondence)
+    row["seconds"] = seconds
+    return surface, row
+
+
+def mcf(binary, surface, out):
+    off = os.path.join(out, "prepared.off")
+    write_off(surface, off)
+    result_path = os.path.join(out, "mcf.json")
+    result = subprocess.run([binary, off, result_path], capture_output=True, text=True)
+    if result.returncode != 0:
+        return {"failed": result.stderr.strip()}
+    with open(result_path) as f:
+        data = json.load(f)
+    nodes = [tuple(n["position"]) for n in data["nodes"]]
+    row = measure(surface, nodes, [tuple(e) for e in data["edges"]],
+                  [n["surface"] for n in data["nodes"]])
+    row["seconds"] = data["seconds"]
+    return row
+
+
+def organic_meshes(mesh_dir):
+    table = []
+    with open(os.path.join(mesh_dir, "SOURCES.md"), encoding="utf-8") as f:
+        for line in f:
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            if len(cells) >= 7 and cells[1] == "organic" and cells[6].isdigit():
+                table.append((cells[0], int(cells[6])))
+    return table
+
+
+def markdown(rows, stamp):
+    lines = [BEGIN, "", "### Curve skeletons against CGAL's mean-curvature-flow skeleton", "",
+             stamp, "",
+             "Ours: `medial-axis --curve-skeleton` at the organic preset, timed from reading the "
+             "mesh to writing the skeleton (MAT included); CGAL: "
+             "`extract_mean_curvature_flow_skeleton` of the same prepared surface with its "
+             "default parameters, timed for the extraction alone. Centredness: per node, "
+             "|distance to the surface − mean distance to its corresponding surface points| / "
+             "diagonal (ours: the points whose medial ball is the node's), median and largest "
+             "in %. `Benchmarks/curve_skeleton_report.py` made this table.", "",
+             "| mesh | genus | loops ours / CGAL | nodes ours / CGAL | centred median ours / CGAL "
+             "| centred largest ours / CGAL | outside ours / CGAL | seconds ours / CGAL |",
+             "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        o, c = r["ours"], r["cgal"]
+        if "failed" in c:
+            lines.append("| %s | %d | %d / — | %d / — | %.3f / — | %.3f / — | %d / — | %.2f / "
+                         "failed |" % (r["mesh"], r["genus"], o["loops"], o["nodes"],
+                                       100 * o["centred_median"], 100 * o["centred_max"],
+                                       o["outside"], o["seconds"]))
+            continue
+        lines.append("| %s | %d | %d / %d | %d / %d | %.3f / %.3f | %.3f / %.3f | %d / %d | "
+                     "%.2f / %.2f |" % (r["mesh"], r["genus"], o["loops"], c["loops"], o["nodes"],
+                                        c["nodes"], 100 * o["centred_median"],
+                                        100 * c["centred_median"], 100 * o["centred_max"],
+                                        100 * c["centred_max"], o["outside"], c["outside"],
+                                        o["seconds"], c["seconds"]))
+    done = [r for r in rows if "failed" not in r["cgal"]]
+    lines += ["", "Loops right: ours %d of %d, CGAL %d of %d. More centred (median): ours on %d "
+              "of %d. Faster: ours on %d of %d." % (
+                  sum(r["ours"]["loops"] == r["genus"] for r in rows), len(rows),
+                  sum(r["cgal"]["loops"] == r["genus"] for r in done), len(rows),
+                  sum(r["ours"]["centred_median"] < r["cgal"]["centred_median"] for r in done),
+                  len(done), sum(r["ours"]["seconds"] < r["cgal"]["seconds"] for r in done),
+                  len(done)), "", END]
+    return "\n".join(lines)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--meshes", default=os.path.join(ROOT, "..", "shared", "data", "meshes"))
+    parser.add_argument("--build", default=os.path.join(ROOT, "build", "vtk"))
+    parser.add_argument("--out", default=os.path.join(ROOT, "bench-results", "curve-skeletons"))
+    parser.add_argument("--doc", help="replace the curve-skeleton section of this Markdown file")
+    parser.add_argument("--only", nargs="*", help="mesh file names")
+    args = parser.parse_args()
+    tool = os.path.join(args.build, "bin", "medial-axis")
+    binary = build_mcf(args.build)
+    rows = []
+    for name, genus in organic_meshes(args.meshes):
+        if args.only and name not in args.only:
+            continue
+        out = os.path.join(args.out, name)
+        os.makedirs(out, exist_ok=True)
+        surface, mine = ours(tool, os.path.join(args.meshes, name), out)
+        rows.append({"mesh": name, "genus": genus, "ours": mine, "cgal": mcf(binary, surface, out)})
+        print(name, json.dumps(rows[-1]), flush=True)
+    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short=12", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    stamp = "Run of %s, commit %s, two threads." % (time.strftime("%Y-%m-%d"), commit)
+    text = markdown(rows, stamp)
+    with open(os.path.join(args.out, "curve_skeletons.json"), "w") as f:
+        json.dump(rows, f, indent=1)
+    with open(os.path.join(args.out, "curve_skeletons.md"), "w") as f:
+        f.write(text + "\n")
+    if args.doc:
+        with open(args.doc, encoding="utf-8") as f:
+            doc = f.read()
+        if BEGIN in doc and END in doc:
+            doc = doc[:doc.index(BEGIN)] + text + doc[doc.index(END) + len(END):]
+        else:
+            doc = doc.rstrip("\n") + "\n\n" + text + "\n"
+        with open(args.doc, "w", encoding="utf-8") as f:
+            f.write(doc)
+    print(text)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -73,7 +73,8 @@ public:
 
   ///@{
   /// Edges longer than this times the larger distance to the surface at
-  /// their ends are split evenly (where the new nodes lie inside the solid),
+  /// their ends (and than 1% of the diagonal) are split evenly (where the
+  /// new nodes lie inside the solid),
   /// so that each node's share of the surface is local. Default 1; 0 keeps
   /// only the nodes the thinning left.
   vtkSetClampMacro(NodeSpacing, double, 0.0, 100.0);

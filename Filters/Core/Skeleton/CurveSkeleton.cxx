@@ -285,10 +285,10 @@ void ExtendEnds(WorkGraph& g, const std::vector<std::vector<Index>>& members,
 }
 
 // Edges longer than `spacing` times the larger distance to the surface at
-// their ends are split evenly, where every new node lies inside the solid:
-// nodes then stand at most about that far apart, so that each one's share
-// of the surface is local.
-void Resample(WorkGraph& g, const TriangleLocator& locator, double spacing)
+// their ends (and than `shortest`) are split evenly, where every new node
+// lies inside the solid: nodes then stand about that far apart, so that
+// each one's share of the surface is local.
+void Resample(WorkGraph& g, const TriangleLocator& locator, double spacing, double shortest)
 {
   if (!(spacing > 0.0))
   {
@@ -309,7 +309,8 @@ void Resample(WorkGraph& g, const TriangleLocator& locator, double spacing)
   for (const auto& [a, b] : edges)
   {
     const Point3 pa = g.Position[a], pb = g.Position[b];
-    const double step = spacing * std::min(locator.Distance(pa), locator.Distance(pb));
+    const double step =
+      std::max(shortest, spacing * std::max(locator.Distance(pa), locator.Distance(pb)));
     const double length = std::sqrt(Distance2(pa, pb));
     if (!(step > 0.0) || length <= step)
     {
@@ -482,7 +483,8 @@ CurveSkeleton ComputeCurveSkeleton(
   Smooth(g, locator, options.SmoothingIterations);
 
   ExtendEnds(g, members, medial, locator);
-  Resample(g, locator, options.NodeSpacing);
+  // (Not closer than 1% of the diagonal: thin tentacles would get thousands.)
+  Resample(g, locator, options.NodeSpacing, 0.01 * BoxDiagonal(surface));
 
   // The nodes left, renumbered in order.
   const std::size_t total = g.Alive.size();

@@ -41,8 +41,9 @@ struct CurveSkeletonOptions
   /// it out of the solid).
   int SmoothingIterations = 10;
   /// Edges longer than this times the larger distance to the surface at
-  /// their ends are split evenly (where the new nodes lie inside), so that
-  /// each node's share of the surface is local; 0 keeps the thinned nodes.
+  /// their ends (and than 1% of the diagonal) are split evenly (where the
+  /// new nodes lie inside), so that each node's share of the surface is
+  /// local; 0 keeps the thinned nodes.
   double NodeSpacing = 1.0;
   /// Fraction in [0, 1]; returning false stops the computation.
   std::function<bool(double)> Progress;

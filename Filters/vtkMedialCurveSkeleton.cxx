@@ -54,13 +54,9 @@ int vtkMedialCurveSkeleton::RequestData(
     return 0;
   }
   medialaxis::MedialMesh medial;
-  std::string problem = medialIn
+  const std::string problem = medialIn
     ? medialaxis::PolyDataToMedialMesh(medialIn, medial)
     : "no medial mesh (connect the surface's medial mesh, e.g. vtkStructuralMedialAxis's output)";
-  if (problem.empty()) // (converted and validated: now is it this surface's?)
-  {
-    problem = medialaxis::CheckMedialMeshOfSurface(medial, surface);
-  }
   if (!problem.empty())
   {
     vtkErrorMacro(<< "input port 1: " << problem);
@@ -78,6 +74,11 @@ int vtkMedialCurveSkeleton::RequestData(
   };
   const medialaxis::CurveSkeleton skeleton =
     medialaxis::ComputeCurveSkeleton(medial, surface, options);
+  if (!skeleton.Problem.empty()) // not this surface's medial mesh
+  {
+    vtkErrorMacro(<< "input port 1: " << skeleton.Problem);
+    return 0;
+  }
   if (skeleton.Aborted)
   {
     return 1;

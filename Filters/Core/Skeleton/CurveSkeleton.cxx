@@ -61,6 +61,46 @@ Point3 PlaceInside(const Point3& point, const std::vector<Index>& members, const
   return locator.Inside(moved) ? moved : point;
 }
 
+// Why `medial` cannot be the medial mesh of `surface` (see
+// CheckMedialMeshOfSurface), or empty.
+std::string MedialMeshProblem(
+  const MedialMesh& medial, const TriangleMesh& surface, const TriangleLocator& locator)
+{
+  if (medial.NumberOfVertices() == 0)
+  {
+    return "the medial mesh is empty";
+  }
+  const double diagonal = BoxDiagonal(surface);
+  // Up to 256 vertices spread over the mesh.
+  const std::size_t nv = medial.NumberOfVertices(), step = std::max<std::size_t>(1, nv / 256);
+  std::size_t tested = 0, outside = 0;
+  std::vector<double> mismatch;
+  for (std::size_t v = 0; v < nv; v += step)
+  {
+    ++tested;
+    if (!locator.Inside(medial.Centers[v]))
+    {
+      ++outside;
+    }
+    mismatch.push_back(std::abs(locator.Distance(medial.Centers[v]) - medial.Radii[v]));
+  }
+  if (10 * outside > tested)
+  {
+    return std::to_string(outside) + " of " + std::to_string(tested) +
+      " sampled medial centres lie outside the surface: connect the medial mesh computed from "
+      "this surface";
+  }
+  std::nth_element(mismatch.begin(), mismatch.begin() + mismatch.size() / 2, mismatch.end());
+  if (mismatch[mismatch.size() / 2] > 0.05 * diagonal)
+  {
+    return "the medial radii do not match the centres' distances to the surface (median "
+           "difference " +
+      std::to_string(100.0 * mismatch[mismatch.size() / 2] / diagonal) +
+      "% of the diagonal): connect the medial mesh computed from this surface";
+  }
+  return "";
+}
+
 // The thinned graph while its spurs are pruned and its nodes smoothed.
 struct WorkGraph
 {
@@ -439,6 +479,12 @@ CurveSkeleton ComputeCurveSkeleton(
   const MedialMesh& medial, const TriangleMesh& surface, const CurveSkeletonOptions& options)
 {
   CurveSkeleton out;
+  const TriangleLocator locator(surface);
+  out.Problem = MedialMeshProblem(medial, surface, locator);
+  if (!out.Problem.empty())
+  {
+    return out;
+  }
   const auto report = [&](double f) { return !options.Progress || options.Progress(f); };
   const ThinnedGraph thin = ThinMedialMesh(medial, [&](double f) { return report(0.7 * f); });
   if (thin.Aborted || !report(0.7))
@@ -447,7 +493,6 @@ CurveSkeleton ComputeCurveSkeleton(
     return out;
   }
   out.UncollapsedTriangles = thin.UncollapsedTriangles;
-  const TriangleLocator locator(surface);
 
   // Each node at its medial vertices' centroid; where that lies outside the
   // solid, at the nearest of them inside, or else (a medial vertex a fit
@@ -562,39 +607,6 @@ std::vector<Index> SegmentSurface(const CurveSkeleton& skeleton, const TriangleM
 
 std::string CheckMedialMeshOfSurface(const MedialMesh& medial, const TriangleMesh& surface)
 {
-  if (medial.NumberOfVertices() == 0)
-  {
-    return "the medial mesh is empty";
-  }
-  const TriangleLocator locator(surface);
-  const double diagonal = BoxDiagonal(surface);
-  // Up to 256 vertices spread over the mesh.
-  const std::size_t nv = medial.NumberOfVertices(), step = std::max<std::size_t>(1, nv / 256);
-  std::size_t tested = 0, outside = 0;
-  std::vector<double> mismatch;
-  for (std::size_t v = 0; v < nv; v += step)
-  {
-    ++tested;
-    if (!locator.Inside(medial.Centers[v]))
-    {
-      ++outside;
-    }
-    mismatch.push_back(std::abs(locator.Distance(medial.Centers[v]) - medial.Radii[v]));
-  }
-  if (10 * outside > tested)
-  {
-    return std::to_string(outside) + " of " + std::to_string(tested) +
-      " sampled medial centres lie outside the surface: connect the medial mesh computed from "
-      "this surface";
-  }
-  std::nth_element(mismatch.begin(), mismatch.begin() + mismatch.size() / 2, mismatch.end());
-  if (mismatch[mismatch.size() / 2] > 0.05 * diagonal)
-  {
-    return "the medial radii do not match the centres' distances to the surface (median "
-           "difference " +
-      std::to_string(100.0 * mismatch[mismatch.size() / 2] / diagonal) +
-      "% of the diagonal): connect the medial mesh computed from this surface";
-  }
-  return "";
+  return MedialMeshProblem(medial, surface, TriangleLocator(surface));
 }
 }

@@ -79,9 +79,13 @@ struct CurveSkeleton
   /// void); 0 for the medial axis of a solid.
   std::size_t UncollapsedTriangles = 0;
   bool Aborted = false;
+  /// Why nothing was computed: the medial mesh is not `surface`'s
+  /// (CheckMedialMeshOfSurface); empty otherwise.
+  std::string Problem;
 };
 
-/// The curve skeleton of the closed `surface` from its medial mesh.
+/// The curve skeleton of the closed `surface` from its medial mesh (nothing,
+/// with Problem said, for the medial mesh of another surface).
 CurveSkeleton ComputeCurveSkeleton(const MedialMesh& medial, const TriangleMesh& surface,
   const CurveSkeletonOptions& options = CurveSkeletonOptions());
 

@@ -49,7 +49,6 @@ public:
     , TriangleAlive(mesh.Faces.size(), 1)
     , Sum(mesh.NumberOfVertices())
     , Weight(mesh.NumberOfVertices())
-    , Count(mesh.NumberOfVertices(), 1)
     , Alive(mesh.NumberOfVertices(), 1)
     , Stamp(mesh.NumberOfVertices(), 0)
     , MergedInto(mesh.NumberOfVertices(), -1)
@@ -193,7 +192,6 @@ public:
     mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
     this->Sum[a] = this->Sum[a] + this->Sum[b];
     this->Weight[a] += this->Weight[b];
-    this->Count[a] += this->Count[b];
     this->Alive[b] = 0;
     this->MergedInto[b] = a;
     ++this->Stamp[a];
@@ -243,7 +241,6 @@ public:
   std::vector<char> TriangleAlive;
   std::vector<Point3> Sum; // of the centres, weighted
   std::vector<double> Weight;
-  std::vector<Index> Count;
   std::vector<char> Alive;
   std::vector<std::uint32_t> Stamp;
   std::vector<Index> MergedInto;
@@ -345,7 +342,6 @@ ThinnedGraph ThinMedialMesh(const MedialMesh& mesh, const std::function<bool(dou
     {
       id[v] = static_cast<Index>(out.Centroid.size());
       out.Centroid.push_back(c.Position(static_cast<Index>(v)));
-      out.Members.push_back(c.Count[v]);
     }
   }
   out.VertexOf.resize(nv);

@@ -29,9 +29,8 @@ struct ThinnedGraph
   /// Per medial vertex: the graph vertex it was merged into.
   std::vector<Index> VertexOf;
   /// Per graph vertex: the centroid of its medial vertices (weighted by
-  /// their balls' volumes) and their count.
+  /// their balls' volumes).
   std::vector<Point3> Centroid;
-  std::vector<Index> Members;
   std::vector<std::array<Index, 2>> Edges; // sorted, unique
   std::size_t Contractions = 0;
   std::size_t FreeFaceCollapses = 0;

@@ -20,53 +20,80 @@ namespace medialaxis
 {
 namespace
 {
-// The self-intersection test is the costliest step of preparation, and the
-// stages of a pipeline prepare the same input one after another (three in
-// the one-click filter). The crossings of the last input are remembered,
-// keyed by its points and cells with their modification times (a new or
-// modified VTK object gets a new time, so a key is never reused) and by the
-// options that shape the triangles.
-class CrossingsMemo
+// The stages of a pipeline prepare the same input one after another (four
+// times in the one-click filter), so the last input's preparation is
+// remembered, keyed by its points and cells with their modification times (a
+// new or modified VTK object gets a new time, so a key is never reused) and
+// by the options. (The costliest step, the self-intersection test,
+// remembers its last answer by content too.)
+class PreparationMemo
 {
 public:
-  using Key = std::tuple<const void*, vtkMTimeType, const void*, vtkMTimeType, const void*,
-    vtkMTimeType, double, bool>;
-
-  static Key KeyOf(vtkPolyData* input, const SurfacePreparationOptions& options)
+  using Key =
+    std::tuple<const void*, vtkMTimeType, const void*, vtkMTimeType, const void*, vtkMTimeType>;
+  static Key KeyOf(vtkPolyData* input)
   {
     auto stamp = [](vtkObject* o) { return o ? o->GetMTime() : vtkMTimeType(0); };
     return Key(input->GetPoints(), stamp(input->GetPoints()), input->GetPolys(),
-      stamp(input->GetPolys()), input->GetStrips(), stamp(input->GetStrips()),
-      options.RelativeMergeTolerance, options.FixOrientation);
+      stamp(input->GetPolys()), input->GetStrips(), stamp(input->GetStrips()));
   }
-  bool Find(const Key& key, std::vector<TriangleCrossing>& crossings)
+  /// The options that shape the result but the repair's (a call given known
+  /// crossings is not remembered).
+  using Options = std::tuple<double, bool, int, double>;
+  static Options OptionsOf(const SurfacePreparationOptions& o)
+  {
+    return Options(
+      o.RelativeMergeTolerance, o.FixOrientation, o.LocalFoldRings, o.MaxPassThroughExtent);
+  }
+  /// The repair's options. A preparation that succeeded without repairing
+  /// anything gives the same result whether a repair was allowed or not (the
+  /// one-click filter prepares with repair first, its stages without).
+  using RepairOptions = std::tuple<bool, double>;
+  static RepairOptions RepairOptionsOf(const SurfacePreparationOptions& o)
+  {
+    return RepairOptions(o.RepairSelfIntersections, o.WrapAlpha);
+  }
+
+  bool FindPrepared(const Key& key, const SurfacePreparationOptions& options,
+    SurfacePreparationReport& report, TriangleMesh& prepared)
   {
     std::lock_guard<std::mutex> lock(this->Mutex);
-    if (this->Valid && key == this->Last)
+    const bool sameRepair = RepairOptionsOf(options) == this->PreparedRepair ||
+      (this->Report.Ok() && !this->Report.Repaired);
+    if (this->PreparedValid && key == this->PreparedKey &&
+      OptionsOf(options) == this->PreparedOptions && sameRepair)
     {
-      crossings = this->Crossings;
+      report = this->Report;
+      prepared = this->Prepared;
       return true;
     }
     return false;
   }
-  void Remember(const Key& key, const std::vector<TriangleCrossing>& crossings)
+  void RememberPrepared(const Key& key, const SurfacePreparationOptions& options,
+    const SurfacePreparationReport& report, const TriangleMesh& prepared)
   {
     std::lock_guard<std::mutex> lock(this->Mutex);
-    this->Last = key;
-    this->Crossings = crossings;
-    this->Valid = true;
+    this->PreparedKey = key;
+    this->PreparedOptions = OptionsOf(options);
+    this->PreparedRepair = RepairOptionsOf(options);
+    this->Report = report;
+    this->Prepared = prepared;
+    this->PreparedValid = true;
   }
 
 private:
   std::mutex Mutex;
-  bool Valid = false;
-  Key Last;
-  std::vector<TriangleCrossing> Crossings;
+  bool PreparedValid = false;
+  Key PreparedKey;
+  Options PreparedOptions;
+  RepairOptions PreparedRepair;
+  SurfacePreparationReport Report;
+  TriangleMesh Prepared;
 };
 
-CrossingsMemo& Memo()
+PreparationMemo& Memo()
 {
-  static CrossingsMemo memo;
+  static PreparationMemo memo;
   return memo;
 }
 }
@@ -158,6 +185,12 @@ SurfacePreparationReport PrepareSurfaceMesh(
     return report;
   }
 
+  const PreparationMemo::Key key = PreparationMemo::KeyOf(input);
+  if (!options.KnownCrossings && Memo().FindPrepared(key, options, report, prepared))
+  {
+    return report;
+  }
+
   // Polygons and strips become triangles with VTK's own triangulator, which
   // handles non-convex polygons; the result is checked below like any soup.
   vtkNew<vtkPolyData> shell;
@@ -195,22 +228,15 @@ SurfacePreparationReport PrepareSurfaceMesh(
     }
   }
 
-  const CrossingsMemo::Key key = CrossingsMemo::KeyOf(input, options);
-  std::vector<TriangleCrossing> known;
-  SurfacePreparationOptions memoOptions = options;
-  if (!options.KnownCrossings && Memo().Find(key, known))
-  {
-    memoOptions.KnownCrossings = &known;
-  }
-  report = PrepareSurface(soup, prepared, memoOptions);
-  if (report.SelfIntersectionTested && !memoOptions.KnownCrossings)
-  {
-    Memo().Remember(key, report.Crossings);
-  }
+  report = PrepareSurface(soup, prepared, options);
   if (notTriangles)
   {
     report.Notes.push_back(
       std::to_string(notTriangles) + " polygon(s) could not be triangulated and were dropped");
+  }
+  if (!options.KnownCrossings)
+  {
+    Memo().RememberPrepared(key, options, report, prepared);
   }
   return report;
 }

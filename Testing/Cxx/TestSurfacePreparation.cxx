@@ -2,6 +2,7 @@
 // Surface validation and preparation, one defect per small hand-built mesh.
 #include "Geometry/Vec3.h"
 #include "Surface/AnalyticShapes.h"
+#include "Surface/SelfIntersection.h"
 #include "Surface/SharpEdgeContent.h"
 #include "Surface/SurfacePreparation.h"
 #include "TestHelpers.h"
@@ -485,6 +486,57 @@ TEST(MedialSurfaceValidator, RemembersSelfIntersectionsOnlyForAnUnchangedInput)
   EXPECT_TRUE(Contains(first.Error, "the surface passes through itself")) << first.Error;
   EXPECT_EQ(again.Error, first.Error);
   EXPECT_EQ(again.CrossingFarApart, first.CrossingFarApart);
+}
+
+TEST(MedialSurfaceValidator, RemembersPreparationOnlyWhereTheRepairOptionCannotMatter)
+{
+  // The one-click filter prepares with repair allowed, its stages without. A
+  // surface that needed no repair is the same either way; one that was
+  // repaired must still be refused where repair is not allowed.
+  TriangleMesh shifted = MakeSphere(1.0, 8);
+  for (Point3& p : shifted.Points)
+  {
+    p[0] += 0.5;
+  }
+  auto overlapping = test::ToPolyData(Append(MakeSphere(1.0, 8), shifted));
+  SurfacePreparationOptions repair;
+  repair.RepairSelfIntersections = true;
+  vtkNew<vtkPolyData> out;
+  const SurfacePreparationReport repaired = PrepareSurfacePolyData(overlapping, out, repair);
+  ASSERT_TRUE(repaired.Ok()) << repaired.Error;
+  EXPECT_TRUE(repaired.Repaired);
+  const SurfacePreparationReport refused = PrepareSurfacePolyData(overlapping, out);
+  EXPECT_TRUE(Contains(refused.Error, "surface intersects itself: ")) << refused.Error;
+  EXPECT_EQ(out->GetNumberOfPolys(), 0);
+
+  auto sphere = test::ToPolyData(MakeSphere(1.0, 8));
+  const SurfacePreparationReport clean = PrepareSurfacePolyData(sphere, out, repair);
+  ASSERT_TRUE(clean.Ok()) << clean.Error;
+  EXPECT_FALSE(clean.Repaired);
+  vtkNew<vtkPolyData> again;
+  const SurfacePreparationReport same = PrepareSurfacePolyData(sphere, again);
+  ASSERT_TRUE(same.Ok()) << same.Error;
+  EXPECT_EQ(again->GetNumberOfPolys(), out->GetNumberOfPolys());
+  EXPECT_EQ(again->GetNumberOfPoints(), out->GetNumberOfPoints());
+}
+
+TEST(SelfIntersection, RemembersAnswersByContent)
+{
+  // Answers are kept by the content tested: a soup of the same size with one
+  // point moved is tested afresh, and the first soup still gets its answer.
+  const TriangleMesh sphere = MakeSphere(1.0, 8);
+  TriangleMesh pulled = sphere;
+  std::size_t north = 0;
+  for (std::size_t i = 1; i < pulled.Points.size(); ++i)
+  {
+    north = pulled.Points[i][2] > pulled.Points[north][2] ? i : north;
+  }
+  pulled.Points[north] = { 0.05, 0.03, -1.5 };
+  EXPECT_TRUE(FindSelfIntersections(sphere.Points, sphere.Triangles).empty());
+  EXPECT_FALSE(FindSelfIntersections(pulled.Points, pulled.Triangles).empty());
+  EXPECT_TRUE(FindSelfIntersections(sphere.Points, sphere.Triangles).empty());
+  EXPECT_EQ(FindSelfIntersections(pulled.Points, pulled.Triangles).size(),
+    FindSelfIntersections(pulled.Points, pulled.Triangles).size());
 }
 
 // The automatic preset's measure: creases of a machined part count, smooth

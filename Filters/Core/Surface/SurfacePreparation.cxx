@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
 
 namespace medialaxis
@@ -41,17 +42,79 @@ struct CellKeyHash
   }
 };
 
-// Maps every point to the first earlier point within `tolerance` (a hash grid
-// of cell size `tolerance`; 27 neighbour cells are searched). Written by hand
-// because it must be deterministic in input order and run in O(n).
+// Maps every point to the first earlier point within `tolerance` (a grid of
+// cell size `tolerance`; 27 neighbour cells are searched). Written by hand
+// because it must be deterministic in input order.
 std::vector<Index> MergeCoincidentPoints(
   const std::vector<Point3>& points, const std::vector<char>& used, double tolerance)
 {
   std::vector<Index> representative(points.size(), -1);
   if (tolerance > 0.0)
   {
-    std::unordered_map<CellKey, std::vector<Index>, CellKeyHash> grid;
-    grid.reserve(points.size());
+    // The used points sorted by (cell, index), each cell's run found through
+    // an open-addressing table (no allocation per point or cell).
+    struct CellPoint
+    {
+      CellKey Cell;
+      Index Point;
+    };
+    std::vector<CellPoint> sorted;
+    sorted.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      if (used[i])
+      {
+        const Point3& p = points[i];
+        sorted.push_back({ { static_cast<std::int64_t>(std::floor(p[0] / tolerance)),
+                             static_cast<std::int64_t>(std::floor(p[1] / tolerance)),
+                             static_cast<std::int64_t>(std::floor(p[2] / tolerance)) },
+          static_cast<Index>(i) });
+      }
+    }
+    std::sort(sorted.begin(), sorted.end(),
+      [](const CellPoint& x, const CellPoint& y)
+      {
+        return std::tie(x.Cell.I, x.Cell.J, x.Cell.K, x.Point) <
+          std::tie(y.Cell.I, y.Cell.J, y.Cell.K, y.Point);
+      });
+    std::vector<std::size_t> runBegin;
+    for (std::size_t k = 0; k < sorted.size(); ++k)
+    {
+      if (k == 0 || !(sorted[k].Cell == sorted[k - 1].Cell))
+      {
+        runBegin.push_back(k);
+      }
+    }
+    const std::size_t runs = runBegin.size();
+    runBegin.push_back(sorted.size());
+    std::size_t capacity = 16;
+    while (capacity < 2 * runs + 1)
+    {
+      capacity *= 2;
+    }
+    std::vector<std::int64_t> slot(capacity, -1);
+    const CellKeyHash hash;
+    for (std::size_t r = 0; r < runs; ++r)
+    {
+      std::size_t h = hash(sorted[runBegin[r]].Cell) & (capacity - 1);
+      while (slot[h] >= 0)
+      {
+        h = (h + 1) & (capacity - 1);
+      }
+      slot[h] = static_cast<std::int64_t>(r);
+    }
+    auto findRun = [&](const CellKey& key) -> std::int64_t
+    {
+      for (std::size_t h = hash(key) & (capacity - 1); slot[h] >= 0; h = (h + 1) & (capacity - 1))
+      {
+        if (sorted[runBegin[slot[h]]].Cell == key)
+        {
+          return slot[h];
+        }
+      }
+      return -1;
+    };
+
     const double tol2 = tolerance * tolerance;
     for (std::size_t i = 0; i < points.size(); ++i)
     {
@@ -63,6 +126,8 @@ std::vector<Index> MergeCoincidentPoints(
       const CellKey key{ static_cast<std::int64_t>(std::floor(p[0] / tolerance)),
         static_cast<std::int64_t>(std::floor(p[1] / tolerance)),
         static_cast<std::int64_t>(std::floor(p[2] / tolerance)) };
+      // The smallest earlier representative within the tolerance, in the
+      // first of the 27 cells around p that holds one.
       Index found = -1;
       for (int dx = -1; dx <= 1 && found < 0; ++dx)
       {
@@ -70,31 +135,29 @@ std::vector<Index> MergeCoincidentPoints(
         {
           for (int dz = -1; dz <= 1 && found < 0; ++dz)
           {
-            auto it = grid.find({ key.I + dx, key.J + dy, key.K + dz });
-            if (it == grid.end())
+            const std::int64_t run = findRun({ key.I + dx, key.J + dy, key.K + dz });
+            if (run < 0)
             {
               continue;
             }
-            for (Index j : it->second)
+            for (std::size_t k = runBegin[run]; k < runBegin[run + 1]; ++k)
             {
+              const Index j = sorted[k].Point;
+              if (j >= static_cast<Index>(i))
+              {
+                break;
+              }
               const Point3 d = (points[j] - p);
-              if (Dot(d, d) <= tol2 && (found < 0 || j < found))
+              if (representative[j] == j && Dot(d, d) <= tol2)
               {
                 found = j;
+                break;
               }
             }
           }
         }
       }
-      if (found >= 0)
-      {
-        representative[i] = found;
-      }
-      else
-      {
-        representative[i] = static_cast<Index>(i);
-        grid[key].push_back(static_cast<Index>(i));
-      }
+      representative[i] = found >= 0 ? found : static_cast<Index>(i);
     }
     return representative;
   }
@@ -710,11 +773,26 @@ SurfacePreparationReport PrepareSurface(
 
   // 7. Consistent orientation per connected component (breadth-first).
   const std::size_t nt = triangles.size();
-  std::vector<std::vector<std::pair<Index, bool>>> neighbours(nt);
+  // Each triangle's neighbours, in the order of `adjacencies` (one flat
+  // array: a list per triangle costs an allocation each).
+  std::vector<std::size_t> firstNeighbour(nt + 1, 0);
   for (const Adjacency& adj : adjacencies)
   {
-    neighbours[adj.A].push_back({ adj.B, adj.Consistent });
-    neighbours[adj.B].push_back({ adj.A, adj.Consistent });
+    ++firstNeighbour[adj.A + 1];
+    ++firstNeighbour[adj.B + 1];
+  }
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    firstNeighbour[t + 1] += firstNeighbour[t];
+  }
+  std::vector<std::pair<Index, bool>> neighbourList(firstNeighbour[nt]);
+  {
+    std::vector<std::size_t> next(firstNeighbour.begin(), firstNeighbour.end() - 1);
+    for (const Adjacency& adj : adjacencies)
+    {
+      neighbourList[next[adj.A]++] = { adj.B, adj.Consistent };
+      neighbourList[next[adj.B]++] = { adj.A, adj.Consistent };
+    }
   }
   std::vector<Index> component(nt, -1);
   std::vector<char> flip(nt, 0);
@@ -734,8 +812,9 @@ SurfacePreparationReport PrepareSurface(
     {
       const Index t = queue[head];
       members[id].push_back(t);
-      for (const auto& [n, consistent] : neighbours[t])
+      for (std::size_t e = firstNeighbour[t]; e < firstNeighbour[t + 1]; ++e)
       {
+        const auto& [n, consistent] = neighbourList[e];
         const char wanted = flip[t] ^ (consistent ? 0 : 1);
         if (component[n] < 0)
         {

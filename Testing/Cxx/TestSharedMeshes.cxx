@@ -6,6 +6,7 @@
 #include "Mesh/TriangleLocator.h"
 #include "Sampling/BlueNoiseSampler.h"
 #include "Simplification/AtlasSimplifier.h"
+#include "Skeleton/CurveSkeleton.h"
 #include "TestHelpers.h"
 #include "Voronoi/RestrictedVoronoi.h"
 #include "Voronoi/VoronoiMedialAxis.h"
@@ -309,6 +310,22 @@ TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
   {
     EXPECT_EQ(simplifiedChi, chi - static_cast<long long>(simplified.MergedFaces)) << name;
   }
+
+  // Its curve skeleton has one loop per handle, and every node lies inside
+  // the solid with its distance to the surface as radius.
+  const medialaxis::CurveSkeleton curve = medialaxis::ComputeCurveSkeleton(small, surface);
+  ASSERT_TRUE(curve.Problem.empty()) << name << ": " << curve.Problem;
+  EXPECT_EQ(static_cast<long long>(curve.CycleRank), expected.Genus) << name;
+  const medialaxis::TriangleLocator locator(surface);
+  std::size_t outsideNodes = 0;
+  for (std::size_t v = 0; v < curve.Nodes.size(); ++v)
+  {
+    outsideNodes += locator.Inside(curve.Nodes[v]) ? 0 : 1;
+    EXPECT_NEAR(curve.Radii[v], locator.Distance(curve.Nodes[v]), 1e-12) << name;
+  }
+  EXPECT_EQ(outsideNodes, 0u) << name;
+  std::cout << name << ": curve skeleton of " << curve.Nodes.size() << " nodes, " << curve.CycleRank
+            << " loops, " << curve.Branches.size() << " branches\n";
 }
 
 // Spikes tangled in the sheets around them survive the link condition to the

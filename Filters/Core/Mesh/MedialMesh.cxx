@@ -177,6 +177,7 @@ std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh)
   }
   SortEdgeKeys(edges);
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  edges.shrink_to_fit(); // each interior edge was listed twice: half is spare
   return edges;
 }
 

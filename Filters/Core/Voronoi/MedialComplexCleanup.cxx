@@ -27,6 +27,27 @@ void Compact(VoronoiMedialAxisResult& result, const std::vector<char>& vertexAli
   std::vector<Index> offsets{ 0 }, sites;
   std::vector<double> clearance;
   const bool withClearance = result.SiteClearance.size() == mesh.Centers.size();
+  // Exact sizes: the complex is large, and the old one is alive meanwhile.
+  std::size_t vertices = 0, atlasSites = 0, faces = 0;
+  for (std::size_t v = 0; v < mesh.Centers.size(); ++v)
+  {
+    if (vertexAlive[v])
+    {
+      ++vertices;
+      atlasSites += static_cast<std::size_t>(result.AtlasOffsets[v + 1] - result.AtlasOffsets[v]);
+    }
+  }
+  for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
+  {
+    faces += faceAlive[f] ? 1 : 0;
+  }
+  out.Centers.reserve(vertices);
+  out.Radii.reserve(vertices);
+  clearance.reserve(withClearance ? vertices : 0);
+  offsets.reserve(vertices + 1);
+  sites.reserve(atlasSites);
+  out.Faces.reserve(faces);
+  out.Edges.reserve(edges.size());
   for (std::size_t v = 0; v < mesh.Centers.size(); ++v)
   {
     if (!vertexAlive[v])
@@ -45,6 +66,7 @@ void Compact(VoronoiMedialAxisResult& result, const std::vector<char>& vertexAli
     offsets.push_back(static_cast<Index>(sites.size()));
   }
   std::vector<std::array<Index, 2>> pairs;
+  pairs.reserve(faces);
   for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
   {
     if (faceAlive[f])

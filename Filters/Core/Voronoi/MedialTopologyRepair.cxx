@@ -828,6 +828,7 @@ TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,
   long long loops = 0;
   counts.JoinedPieces =
     JoinPieces(result, edges, std::max<std::size_t>(1, expected.Components), queries, loops);
+  std::vector<EdgeKey>().swap(edges); // the later steps build their own
   const long long excess = loops - expected.Genus;
   counts.CutLoops = CutLoops(result.Mesh, excess);
   // Holes in sheets first; then loops of any shape, e.g. round a tube.

@@ -593,10 +593,18 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   MedialMesh& mesh = result.Mesh;
   mesh.Centers.resize(nv);
   mesh.Radii.resize(nv);
+  std::size_t atlasSize = 0;
   for (std::size_t v = 0; v < nv; ++v)
   {
     std::sort(atlas[v].begin(), atlas[v].end());
     atlas[v].erase(std::unique(atlas[v].begin(), atlas[v].end()), atlas[v].end());
+    atlasSize += atlas[v].size();
+  }
+  // Exact sizes here and below: these arrays are the stage's largest.
+  result.AtlasSites.reserve(result.AtlasSites.size() + atlasSize);
+  result.AtlasOffsets.reserve(result.AtlasOffsets.size() + nv);
+  for (std::size_t v = 0; v < nv; ++v)
+  {
     mesh.Centers[v] = (1.0 / groupSize[v]) * centreSum[v];
     double radius = 0.0;
     for (Index s : atlas[v])
@@ -627,6 +635,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   std::vector<double>().swap(emptyRadius);
 
   // 4. Edges: Voronoi edges (duals of Delaunay facets) between inside cells.
+  mesh.Edges.reserve(adjacentInside.size());
   for (const auto& [a, b] : adjacentInside)
   {
     if (vertexOf[a] != vertexOf[b])
@@ -735,6 +744,16 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
     [](const Face& a, const Face& b) { return a.Sites < b.Sites; });
 
   std::vector<char> filtered; // per triangle: its face fails the concave test
+  {
+    std::size_t triangles = 0;
+    for (const Face& face : complete)
+    {
+      triangles += face.Size >= 3 ? face.Size - 2 : 0;
+    }
+    mesh.Faces.reserve(mesh.Faces.size() + triangles);
+    result.FaceSitePair.reserve(result.FaceSitePair.size() + triangles);
+    filtered.reserve(triangles);
+  }
   for (const Face& face : complete)
   {
     const Index s1 = face.Sites[0], s2 = face.Sites[1];

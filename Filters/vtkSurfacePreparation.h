@@ -17,7 +17,9 @@ namespace medialaxis
 SurfacePreparationReport PrepareSurfacePolyData(vtkPolyData* input, vtkPolyData* output,
   const SurfacePreparationOptions& options = SurfacePreparationOptions());
 
-/// The same, giving the prepared surface as a plain triangle mesh.
+/// The same, giving the prepared surface as a plain triangle mesh. The last
+/// input's result is remembered (keyed by its points' and cells' modification
+/// times and the options), so that the stages of one pipeline prepare it once.
 SurfacePreparationReport PrepareSurfaceMesh(vtkPolyData* input, TriangleMesh& prepared,
   const SurfacePreparationOptions& options = SurfacePreparationOptions());
 

@@ -13,7 +13,6 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
-#include <tuple>
 #include <unordered_map>
 
 namespace medialaxis

@@ -67,6 +67,45 @@ def write_off(surface, path):
         f.writelines("3 %d %d %d\n" % tuple(t) for t in polys)
 
 
+def end_reach(surface, nodes, edges, depth, diagonal):
+    """Per free end: how far the surface straight ahead of it (along its last
+    edge) lies beyond its ball, (ray hit - depth) / the limb's radius (the
+    largest depth over the end and the three nodes before it): 0 where the
+    end's ball touches the tip, 1 a limb's radius short of it."""
+    adjacent = [[] for _ in nodes]
+    for a, c in edges:
+        adjacent[a].append(c)
+        adjacent[c].append(a)
+    tree = vtk.vtkOBBTree()
+    tree.SetDataSet(surface)
+    tree.BuildLocator()
+    hits = vtk.vtkPoints()
+    reach = []
+    for v, near in enumerate(adjacent):
+        if len(near) != 1:
+            continue
+        p = np.asarray(nodes[v])
+        step = p - np.asarray(nodes[near[0]])
+        if not np.linalg.norm(step) > 0:
+            continue
+        far = p + step / np.linalg.norm(step) * 2 * diagonal
+        tree.IntersectWithLine(p, far, hits, None)
+        if hits.GetNumberOfPoints() == 0:
+            continue
+        gap = min(np.linalg.norm(np.asarray(hits.GetPoint(i)) - p)
+                  for i in range(hits.GetNumberOfPoints()))
+        limb, previous, current = depth[v], v, v
+        for _ in range(3):
+            onward = [x for x in adjacent[current] if x != previous]
+            if len(adjacent[current]) > 2 or not onward:
+                break
+            previous, current = current, onward[0]
+            limb = max(limb, depth[current])
+        if limb > 0:
+            reach.append((gap - depth[v]) / limb)
+    return reach
+
+
 def measure(surface, nodes, edges, correspondence, radii=None):
     """Loops, nodes outside, the radius error (|distance to the surface -
     radius| / diagonal, median and largest; radius: the skeleton's own where
@@ -89,8 +128,10 @@ def measure(surface, nodes, edges, correspondence, radii=None):
         parent[find(a)] = find(c)
     components = sum(1 for v in range(len(nodes)) if find(v) == v)
     off, radius_error, outside = [], [], 0
+    depth = []
     for v, p in enumerate(nodes):
         d = distance.EvaluateFunction(p)
+        depth.append(abs(d))
         outside += d > 0
         mean = None
         if correspondence[v]:
@@ -105,7 +146,10 @@ def measure(surface, nodes, edges, correspondence, radii=None):
 
     def largest(values):
         return max(values) if values else float("nan")
+    reach = end_reach(surface, nodes, unique, depth, diagonal)
     return {"loops": len(unique) - len(nodes) + components, "nodes": len(nodes),
+            "ends": len(reach), "reach_median": median(reach), "reach_max": largest(reach),
+            "reach_short": sum(1 for x in reach if x > 1.0),
             "centred_median": median(off), "centred_max": largest(off),
             "radius_median": median(radius_error), "radius_max": largest(radius_error),
             "outside": outside}
@@ -173,6 +217,12 @@ def organic_meshes(mesh_dir):
     return table
 
 
+def pooled(rows, who):
+    """The median over the meshes' median end reach (meshes with ends)."""
+    values = [r[who]["reach_median"] for r in rows if r[who]["ends"]]
+    return statistics.median(values) if values else float("nan")
+
+
 def markdown(rows, stamp):
     lines = [BEGIN, "", "### Curve skeletons against CGAL's mean-curvature-flow skeleton", "",
              stamp, "",
@@ -186,39 +236,54 @@ def markdown(rows, stamp):
              "distance to the node's corresponding surface points. Correspondence centredness: "
              "the same with that mean distance for both (ours: the points whose nearest node "
              "ball is the node's): how far a node's share of the surface is from one equidistant "
-             "ring around it. `python3 Benchmarks/curve_skeleton_report.py --doc "
+             "ring around it. Ends short of their tip: free ends whose ball stops more than "
+             "the limb's radius (the largest over the end and the three nodes before it) "
+             "before the surface straight ahead along the last edge. "
+             "`python3 Benchmarks/curve_skeleton_report.py --doc "
              "docs/benchmark-results.md` made this section.", "",
              "| mesh | genus | loops ours / CGAL | nodes ours / CGAL | radius error ours / CGAL "
              "| correspondence centredness ours / CGAL | outside ours / CGAL "
-             "| seconds ours / CGAL |", "|---|---|---|---|---|---|---|---|"]
+             "| ends short of their tip ours / CGAL | seconds ours / CGAL |",
+             "|---|---|---|---|---|---|---|---|---|"]
 
     def pair(row, key):
         return "%.3f (%.2f)" % (100 * row[key + "_median"], 100 * row[key + "_max"])
+
+    def short(row):
+        return "%d of %d" % (row["reach_short"], row["ends"])
     for r in rows:
         o, c = r["ours"], r["cgal"]
         if "failed" in c:
-            lines.append("| %s | %d | %d / — | %d / — | %s / — | %s / — | %d / — | %.2f / failed |"
+            lines.append("| %s | %d | %d / — | %d / — | %s / — | %s / — | %d / — | %s / — "
+                         "| %.2f / failed |"
                          % (r["mesh"], r["genus"], o["loops"], o["nodes"], pair(o, "radius"),
-                            pair(o, "centred"), o["outside"], o["seconds"]))
+                            pair(o, "centred"), o["outside"], short(o), o["seconds"]))
             continue
-        lines.append("| %s | %d | %d / %d | %d / %d | %s / %s | %s / %s | %d / %d | %.2f / %.2f |"
+        lines.append("| %s | %d | %d / %d | %d / %d | %s / %s | %s / %s | %d / %d | %s / %s "
+                     "| %.2f / %.2f |"
                      % (r["mesh"], r["genus"], o["loops"], c["loops"], o["nodes"], c["nodes"],
                         pair(o, "radius"), pair(c, "radius"), pair(o, "centred"),
-                        pair(c, "centred"), o["outside"], c["outside"], o["seconds"],
-                        c["seconds"]))
+                        pair(c, "centred"), o["outside"], c["outside"], short(o), short(c),
+                        o["seconds"], c["seconds"]))
     done = [r for r in rows if "failed" not in r["cgal"]]
 
     def count(test):
         return sum(1 for r in done if test(r["ours"], r["cgal"]))
     lines += ["", "Loops right: ours %d of %d, CGAL %d of %d (%d failed). Smaller median radius "
               "error: ours on %d of %d; more centred by correspondence (median): ours on %d of "
-              "%d. Fewer nodes outside or as few: ours on %d of %d. Faster: ours on %d of %d."
+              "%d. Fewer nodes outside or as few: ours on %d of %d. Ends short of their tip: "
+              "ours %d of %d (median reach %.2f limb radii), CGAL %d of %d (%.2f). "
+              "Faster: ours on %d of %d."
               % (sum(r["ours"]["loops"] == r["genus"] for r in rows), len(rows),
                  sum(r["cgal"]["loops"] == r["genus"] for r in done), len(rows),
                  len(rows) - len(done),
                  count(lambda o, c: o["radius_median"] < c["radius_median"]), len(done),
                  count(lambda o, c: o["centred_median"] < c["centred_median"]), len(done),
                  count(lambda o, c: o["outside"] <= c["outside"]), len(done),
+                 sum(r["ours"]["reach_short"] for r in rows),
+                 sum(r["ours"]["ends"] for r in rows), pooled(rows, "ours"),
+                 sum(r["cgal"]["reach_short"] for r in done),
+                 sum(r["cgal"]["ends"] for r in done), pooled(done, "cgal"),
                  count(lambda o, c: o["seconds"] < c["seconds"]), len(done)), "", END]
     return "\n".join(lines)
 

@@ -68,6 +68,23 @@ TriangleMesh Scaled(TriangleMesh mesh, const Point3& scale)
   }
   return mesh;
 }
+
+// How far the end node nearest to `tip` stands from it, in that node's
+// radii: 1 where its ball touches the tip.
+double TipDistanceInEndRadii(const CurveSkeleton& s, const Point3& tip)
+{
+  double best = HUGE_VAL;
+  std::size_t end = 0;
+  for (std::size_t v = 0; v < s.Nodes.size(); ++v)
+  {
+    if (s.Types[v] == SkeletonNodeType::End && Distance2(s.Nodes[v], tip) < best)
+    {
+      best = Distance2(s.Nodes[v], tip);
+      end = v;
+    }
+  }
+  return std::sqrt(best) / s.Radii[end];
+}
 }
 
 TEST(CurveSkeleton, ThinningKeepsTheHomotopyType)
@@ -132,8 +149,36 @@ TEST(CurveSkeleton, EllipsoidGivesASegmentOnItsLongAxis)
     lo = std::min(lo, p[0]);
     hi = std::max(hi, p[0]);
   }
-  EXPECT_GT(hi - lo, 0.3); // along x, short of the sheet's 1.82
-  EXPECT_LT(hi - lo, 1.82);
+  // Along x, as far as the sheet (+-0.91, where the balls touching the tips
+  // stand) and no farther: the end balls reach within a quarter of their
+  // radius of the tips.
+  EXPECT_GT(hi - lo, 0.3);
+  EXPECT_LT(hi - lo, 1.83);
+  EXPECT_LT(TipDistanceInEndRadii(s, { 1.0, 0.0, 0.0 }), 1.25);
+  EXPECT_LT(TipDistanceInEndRadii(s, { -1.0, 0.0, 0.0 }), 1.25);
+}
+
+TEST(CurveSkeleton, EndsReachTheTipsOfTaperedLimbs)
+{
+  // A long ellipsoid narrowing towards +z to 40% of its width, round and
+  // flattened: the simplified medial mesh stops short of the thin tip, the
+  // skeleton's end goes on to the ball that touches it.
+  for (const double flat : { 1.0, 0.6 })
+  {
+    const double taper = 0.6;
+    TriangleMesh limb = MakeSphere(1.0, 48);
+    for (Point3& p : limb.Points)
+    {
+      const double narrowing = 1.0 - taper * 0.5 * (p[2] + 1.0);
+      p = { 0.5 * narrowing * p[0], 0.5 * flat * narrowing * p[1], 3.0 * p[2] };
+    }
+    const CurveSkeleton s = SkeletonOf(limb, 6000, 300);
+    ExpectCentred(s, limb);
+    EXPECT_EQ(s.CycleRank, 0u);
+    ASSERT_EQ(s.Branches.size(), 1u);
+    EXPECT_LT(TipDistanceInEndRadii(s, { 0.0, 0.0, 3.0 }), 1.25) << "taper " << taper;
+    EXPECT_LT(TipDistanceInEndRadii(s, { 0.0, 0.0, -3.0 }), 1.25) << "taper " << taper;
+  }
 }
 
 TEST(CurveSkeleton, CylinderGivesOneSegment)

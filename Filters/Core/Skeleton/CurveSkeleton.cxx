@@ -274,15 +274,80 @@ void Smooth(WorkGraph& g, const TriangleLocator& locator, int iterations)
   }
 }
 
-// Each free end reaches on to the farthest centre, along the branch's last
-// step, of the medial balls it gathered (pruned branches' included) that are
-// at least three quarters as large as its own and lie within a quarter of
-// its radius of that line: thinning and pruning stop short of a tube's end,
-// and the balls of a rim or corner, which thin out sideways, are not
-// followed.
+// From `start`, steps along `heading` while the surface point nearest to
+// the next position lies more than 45 degrees off the heading (beside it,
+// as in a tube, not ahead, as at its end), the distance to the surface
+// stays above a quarter of its first value (the same limb, not a thin rim
+// approached at a slant) and the step crosses no triangle. Inside a limb
+// whose end the medial mesh does not reach (a simplified one stops short
+// of thin tips), the march ends near the centre of the ball that touches
+// the tip. Steps are a quarter of the distance to the surface, halved on
+// refusal down to 1/64 of it; at most four radii of `start` are gone, as
+// a straight march leaves the centre of a curling limb.
+Point3 MarchToTip(const Point3& start, const Point3& heading, const TriangleLocator& locator)
+{
+  const auto nearest = [&](const Point3& p)
+  { return locator.Closest(p, [](Index) { return true; }); };
+  TriangleLocator::ClosestHit hit = nearest(start);
+  const double radius = std::sqrt(hit.Distance2);
+  Point3 position = start;
+  double travelled = 0.0, fraction = 0.25;
+  while (hit.Triangle >= 0 && travelled < 4.0 * radius && fraction >= 1.0 / 64.0)
+  {
+    const double step = fraction * std::sqrt(hit.Distance2);
+    const Point3 next = position + step * heading;
+    const TriangleLocator::ClosestHit ahead = nearest(next);
+    const Point3 toSurface = ahead.Point - next;
+    const double reach = Norm(toSurface);
+    if (ahead.Triangle < 0 || !(reach >= 0.25 * radius) || !(reach > 0.0) ||
+      Dot(toSurface, heading) > std::sqrt(0.5) * reach ||
+      locator.FirstHit(position, heading, 0.0, step).Triangle >= 0)
+    {
+      fraction *= 0.5;
+      continue;
+    }
+    position = next;
+    hit = ahead;
+    travelled += step;
+  }
+  return position;
+}
+
+// Each free end reaches on along the medial mesh to the farthest medial
+// vertex ahead of it in the direction of the branch's last step: thinning
+// and pruning stop short of a limb's end (by about the limb's width where
+// it is flat, as an ear). The vertices followed are linked by medial edges
+// to the end's own and lie ahead of it, within 30 degrees of that
+// direction (widened by a quarter of the end's radius): the sheets of a
+// rim or a corner, which spread sideways at 45 degrees or more, are not
+// followed. The straight step there must stay inside the solid.
 void ExtendEnds(WorkGraph& g, const std::vector<std::vector<Index>>& members,
   const MedialMesh& medial, const TriangleLocator& locator)
 {
+  const std::size_t nm = medial.NumberOfVertices();
+  std::vector<Index> start(nm + 1, 0), next;
+  const std::vector<std::array<Index, 2>> edges = AllEdges(medial);
+  for (const auto& e : edges)
+  {
+    ++start[e[0] + 1];
+    ++start[e[1] + 1];
+  }
+  for (std::size_t i = 0; i < nm; ++i)
+  {
+    start[i + 1] += start[i];
+  }
+  next.resize(start[nm]);
+  {
+    std::vector<Index> fill(start.begin(), start.end() - 1);
+    for (const auto& e : edges)
+    {
+      next[fill[e[0]]++] = e[1];
+      next[fill[e[1]]++] = e[0];
+    }
+  }
+  const double cone = std::tan(30.0 * 3.14159265358979323846 / 180.0);
+  std::vector<char> seen(nm, 0);
+  std::vector<Index> queue, touched;
   const std::size_t n = g.Alive.size();
   for (std::size_t v = 0; v < n; ++v)
   {
@@ -290,33 +355,77 @@ void ExtendEnds(WorkGraph& g, const std::vector<std::vector<Index>>& members,
     {
       continue;
     }
-    const Point3 step = g.Position[v] - g.Position[g.Adjacent[v][0]];
+    const Point3 origin = g.Position[v];
+    const Point3 step = origin - g.Position[g.Adjacent[v][0]];
     const double length = Norm(step);
     if (!(length > 0.0))
     {
       continue;
     }
     const Point3 direction = (1.0 / length) * step;
-    const double radius = locator.Distance(g.Position[v]);
+    const double radius = locator.Distance(origin);
+    const auto ahead = [&](Index m, double& t)
+    {
+      const Point3 offset = medial.Centers[m] - origin;
+      t = Dot(offset, direction);
+      const double aside = std::sqrt(std::max(0.0, Dot(offset, offset) - t * t));
+      return t > 0.0 && aside <= 0.25 * radius + cone * t;
+    };
     double farthest = 1e-3 * radius;
     Index reach = -1;
+    queue.clear();
+    touched.clear();
     for (Index m : members[v])
     {
-      const Point3 offset = medial.Centers[m] - g.Position[v];
-      const double t = Dot(offset, direction);
-      const double aside = std::sqrt(std::max(0.0, Dot(offset, offset) - t * t));
-      if (medial.Radii[m] >= 0.75 * radius && aside <= 0.25 * radius && t > farthest)
+      if (!seen[m])
+      {
+        seen[m] = 1;
+        touched.push_back(m);
+        queue.push_back(m);
+      }
+    }
+    for (std::size_t q = 0; q < queue.size(); ++q)
+    {
+      const Index m = queue[q];
+      double t;
+      if (ahead(m, t) && t > farthest && medial.Radii[m] > 0.0)
       {
         farthest = t;
         reach = m;
       }
+      for (Index k = start[m]; k < start[m + 1]; ++k)
+      {
+        const Index o = next[k];
+        if (!seen[o] && ahead(o, t))
+        {
+          seen[o] = 1;
+          touched.push_back(o);
+          queue.push_back(o);
+        }
+      }
     }
-    if (reach < 0 || !locator.Inside(medial.Centers[reach]))
+    for (Index m : touched)
+    {
+      seen[m] = 0;
+    }
+    Point3 target = origin, heading = direction;
+    if (reach >= 0 && locator.Inside(medial.Centers[reach]))
+    {
+      const Point3 towards = medial.Centers[reach] - origin;
+      const double span = Norm(towards);
+      if (locator.FirstHit(origin, (1.0 / span) * towards, 0.0, span).Triangle < 0)
+      {
+        target = medial.Centers[reach];
+        heading = Normalized(target - g.Position[g.Adjacent[v][0]]);
+      }
+    }
+    target = MarchToTip(target, heading, locator);
+    if (!(Distance2(target, origin) > 0.0))
     {
       continue;
     }
     const Index added = static_cast<Index>(g.Position.size());
-    g.Position.push_back(medial.Centers[reach]);
+    g.Position.push_back(target);
     g.Adjacent.push_back({ static_cast<Index>(v) });
     g.Adjacent[v].push_back(added);
     std::sort(g.Adjacent[v].begin(), g.Adjacent[v].end());

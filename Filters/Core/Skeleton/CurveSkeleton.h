@@ -10,10 +10,10 @@
 // nearest the centroid where the centroid falls outside the solid. Branches
 // from a free end to a junction whose medial balls the rest of the
 // skeleton's, grown by PruneScale, contain (bumps, corners and rims of the
-// surface) are
-// pruned,
-// the nodes inside branches are smoothed (never out of the solid), and every
-// node's radius is its distance to the surface.
+// surface) are pruned, the nodes inside branches are smoothed (never out of
+// the solid), free ends go on to the balls touching their limbs' tips
+// (along the medial mesh, then straight on), and every node's radius is its
+// distance to the surface.
 #ifndef medialaxis_CurveSkeleton_h
 #define medialaxis_CurveSkeleton_h
 

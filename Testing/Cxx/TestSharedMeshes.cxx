@@ -26,6 +26,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 
 #include <cctype>
 #include <cmath>
@@ -324,8 +325,49 @@ TEST_P(SharedMesh, InitialMedialMeshInsideWithSolidTopology)
     EXPECT_NEAR(curve.Radii[v], locator.Distance(curve.Nodes[v]), 1e-12) << name;
   }
   EXPECT_EQ(outsideNodes, 0u) << name;
+  // Free ends reach the tips of their limbs: the surface straight ahead of
+  // an end (along its last edge) lies within one radius of the limb (the
+  // largest over the end and the three nodes before it) of its ball, for
+  // at least 7 ends in 8.
+  std::vector<std::vector<medialaxis::Index>> adjacent(curve.Nodes.size());
+  for (const auto& e : curve.Edges)
+  {
+    adjacent[e[0]].push_back(e[1]);
+    adjacent[e[1]].push_back(e[0]);
+  }
+  using medialaxis::operator-;
+  std::size_t ends = 0, shortEnds = 0;
+  for (std::size_t v = 0; v < curve.Nodes.size(); ++v)
+  {
+    if (adjacent[v].size() != 1)
+    {
+      continue;
+    }
+    const medialaxis::Point3 heading =
+      medialaxis::Normalized(curve.Nodes[v] - curve.Nodes[adjacent[v][0]]);
+    const double ahead =
+      locator.FirstHit(curve.Nodes[v], heading, 0.0, std::numeric_limits<double>::infinity())
+        .Distance;
+    double limb = curve.Radii[v];
+    medialaxis::Index previous = -1, current = static_cast<medialaxis::Index>(v);
+    for (int k = 0;
+         k < 3 && (current == static_cast<medialaxis::Index>(v) || adjacent[current].size() == 2);
+         ++k)
+    {
+      const auto& near = adjacent[current];
+      const medialaxis::Index onward = near[0] != previous ? near[0] : near.back();
+      previous = current;
+      current = onward;
+      limb = std::max(limb, curve.Radii[current]);
+    }
+    ++ends;
+    shortEnds += ahead - curve.Radii[v] > limb ? 1 : 0;
+  }
+  EXPECT_LE(8 * shortEnds, ends) << name << ": " << shortEnds << " of " << ends
+                                 << " ends stop short of their tips";
   std::cout << name << ": curve skeleton of " << curve.Nodes.size() << " nodes, " << curve.CycleRank
-            << " loops, " << curve.Branches.size() << " branches\n";
+            << " loops, " << curve.Branches.size() << " branches, " << shortEnds << " of " << ends
+            << " ends short of their tips\n";
 }
 
 // Spikes tangled in the sheets around them survive the link condition to the

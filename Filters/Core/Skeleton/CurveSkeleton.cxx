@@ -320,7 +320,9 @@ Point3 MarchToTip(const Point3& start, const Point3& heading, const TriangleLoca
 // to the end's own and lie ahead of it, within 30 degrees of that
 // direction (widened by a quarter of the end's radius): the sheets of a
 // rim or a corner, which spread sideways at 45 degrees or more, are not
-// followed. The straight step there must stay inside the solid.
+// followed. The straight step there must stay inside the solid. From there
+// (or from the end, where no vertex is ahead) it marches on to the tip
+// (MarchToTip), which a simplified medial mesh stops short of.
 void ExtendEnds(WorkGraph& g, const std::vector<std::vector<Index>>& members,
   const MedialMesh& medial, const TriangleLocator& locator)
 {

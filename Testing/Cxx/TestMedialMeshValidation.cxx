@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 using namespace medialaxis;
 
@@ -38,6 +39,21 @@ std::string Check(const MedialMesh& m)
 TEST(MedialMeshValidation, ValidMeshPasses)
 {
   EXPECT_EQ(Check(TwoTriangles()), "");
+}
+
+TEST(MedialMeshValidation, VertexAdjacencyListsEveryEdgeBothWays)
+{
+  // Two triangles sharing the edge 1-2 (listed by both) and a line 3-4.
+  const MedialAdjacency a = VertexAdjacency(TwoTriangles());
+  ASSERT_EQ(a.Start.size(), 6u);
+  const auto row = [&](Index v)
+  { return std::vector<Index>(a.Next.begin() + a.Start[v], a.Next.begin() + a.Start[v + 1]); };
+  EXPECT_EQ(row(0), (std::vector<Index>{ 1, 2 }));
+  EXPECT_EQ(row(1), (std::vector<Index>{ 0, 2, 3 }));
+  EXPECT_EQ(row(2), (std::vector<Index>{ 0, 1, 3 }));
+  EXPECT_EQ(row(3), (std::vector<Index>{ 1, 2, 4 }));
+  EXPECT_EQ(row(4), (std::vector<Index>{ 3 }));
+  EXPECT_EQ(a.Next.size(), 2 * AllEdges(TwoTriangles()).size());
 }
 
 TEST(MedialMeshValidation, RadiusDefects)

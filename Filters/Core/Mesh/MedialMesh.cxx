@@ -181,6 +181,31 @@ std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh)
   return edges;
 }
 
+MedialAdjacency VertexAdjacency(const MedialMesh& mesh)
+{
+  const std::size_t n = mesh.NumberOfVertices();
+  const std::vector<std::array<Index, 2>> edges = AllEdges(mesh);
+  MedialAdjacency adjacency;
+  adjacency.Start.assign(n + 1, 0);
+  for (const auto& e : edges)
+  {
+    ++adjacency.Start[e[0] + 1];
+    ++adjacency.Start[e[1] + 1];
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    adjacency.Start[i + 1] += adjacency.Start[i];
+  }
+  adjacency.Next.resize(adjacency.Start[n]);
+  std::vector<Index> fill(adjacency.Start.begin(), adjacency.Start.end() - 1);
+  for (const auto& e : edges)
+  {
+    adjacency.Next[fill[e[0]]++] = e[1];
+    adjacency.Next[fill[e[1]]++] = e[0];
+  }
+  return adjacency;
+}
+
 namespace
 {
 /// The three edges of every triangle, sorted, an edge once per triangle.

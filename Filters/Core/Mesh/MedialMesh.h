@@ -48,6 +48,16 @@ void SortEdgeKeys(std::vector<std::array<Index, 2>>& keys);
 /// Every distinct edge, face edges included, sorted by (min, max) vertex id.
 std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh);
 
+/// The vertices joined to each vertex by an edge of AllEdges, in compressed
+/// rows: those of v are Next[Start[v]] .. Next[Start[v + 1] - 1], in the
+/// order of AllEdges.
+struct MedialAdjacency
+{
+  std::vector<Index> Start;
+  std::vector<Index> Next;
+};
+MedialAdjacency VertexAdjacency(const MedialMesh& mesh);
+
 /// The triangle edges on exactly one triangle (the boundary of the medial
 /// sheets), sorted by (min, max) vertex id.
 std::vector<std::array<Index, 2>> SheetBoundaryEdges(const MedialMesh& mesh);

@@ -12,13 +12,16 @@ namespace medialaxis
 {
 MedialGraph BuildMedialGraph(const MedialMesh& medial)
 {
+  const MedialAdjacency adjacency = VertexAdjacency(medial);
   MedialGraph graph;
   graph.Neighbours.resize(medial.NumberOfVertices());
-  for (const auto& e : AllEdges(medial))
+  for (std::size_t v = 0; v < graph.Neighbours.size(); ++v)
   {
-    const double length = Norm(medial.Centers[e[1]] - medial.Centers[e[0]]);
-    graph.Neighbours[e[0]].push_back({ e[1], length });
-    graph.Neighbours[e[1]].push_back({ e[0], length });
+    for (Index k = adjacency.Start[v]; k < adjacency.Start[v + 1]; ++k)
+    {
+      const Index w = adjacency.Next[k];
+      graph.Neighbours[v].push_back({ w, Norm(medial.Centers[w] - medial.Centers[v]) });
+    }
   }
   return graph;
 }

@@ -327,26 +327,7 @@ void ExtendEnds(WorkGraph& g, const std::vector<std::vector<Index>>& members,
   const MedialMesh& medial, const TriangleLocator& locator)
 {
   const std::size_t nm = medial.NumberOfVertices();
-  std::vector<Index> start(nm + 1, 0), next;
-  const std::vector<std::array<Index, 2>> edges = AllEdges(medial);
-  for (const auto& e : edges)
-  {
-    ++start[e[0] + 1];
-    ++start[e[1] + 1];
-  }
-  for (std::size_t i = 0; i < nm; ++i)
-  {
-    start[i + 1] += start[i];
-  }
-  next.resize(start[nm]);
-  {
-    std::vector<Index> fill(start.begin(), start.end() - 1);
-    for (const auto& e : edges)
-    {
-      next[fill[e[0]]++] = e[1];
-      next[fill[e[1]]++] = e[0];
-    }
-  }
+  const MedialAdjacency adjacency = VertexAdjacency(medial);
   const double cone = std::tan(30.0 * 3.14159265358979323846 / 180.0);
   std::vector<char> seen(nm, 0);
   std::vector<Index> queue, touched;
@@ -395,9 +376,9 @@ void ExtendEnds(WorkGraph& g, const std::vector<std::vector<Index>>& members,
         farthest = t;
         reach = m;
       }
-      for (Index k = start[m]; k < start[m + 1]; ++k)
+      for (Index k = adjacency.Start[m]; k < adjacency.Start[m + 1]; ++k)
       {
-        const Index o = next[k];
+        const Index o = adjacency.Next[k];
         if (!seen[o] && ahead(o, t))
         {
           seen[o] = 1;

@@ -5,6 +5,7 @@
 #include "Envelope/EnvelopeMesher.h"
 #include "Envelope/PrimitivePairs.h"
 #include "Envelope/PrimitiveQuads.h"
+#include "Envelope/PrimitiveRecords.h"
 #include "Envelope/ReconstructionError.h"
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/Vec3.h"
@@ -36,6 +37,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <vector>
 
 using namespace medialaxis;
 
@@ -257,6 +259,60 @@ TEST(MedialPrimitives, SlabMatchesInterpolatedBalls)
       EXPECT_TRUE(onSomeBall);
     }
   }
+}
+
+// The records' lane values, each record at many points, are the scalar
+// distances bit for bit (the simplifier's error bound relies on it): cones,
+// a nested cone, a ball, a slab interior, and a slab without tangent planes
+// (no record); an odd number of points.
+TEST(MedialPrimitives, RecordValuesAreTheScalarDistances)
+{
+  Random rng(5);
+  std::vector<double> x, y, z;
+  std::vector<Point3> points;
+  for (int i = 0; i < 301; ++i)
+  {
+    points.push_back(RandomPoint(rng, -1.5, 2.5));
+    x.push_back(points.back()[0]);
+    y.push_back(points.back()[1]);
+    z.push_back(points.back()[2]);
+  }
+  x.push_back(0.0); // the padding lane
+  y.push_back(0.0);
+  z.push_back(0.0);
+  const records::PointLanes lanes{ x.data(), y.data(), z.data(), points.size() };
+  const auto check = [&](const auto& record, const std::function<double(const Point3&)>& scalar)
+  {
+    std::vector<double> values(x.size(), HUGE_VAL);
+    records::LowerTo(record, lanes, values.data());
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      ASSERT_EQ(values[i], std::min(HUGE_VAL, scalar(points[i]))) << "point " << i;
+    }
+    EXPECT_EQ(values.back(), HUGE_VAL); // the padding lane is left alone
+  };
+  const Point3 c0{ 0.1, -0.2, 0.3 }, c1{ 1.5, 0.7, -0.4 };
+  for (const auto& radii :
+    { std::array<double, 2>{ 0.6, 0.2 }, { 0.3, 0.3 }, { 0.0, 0.5 }, { 2.5, 0.1 } })
+  {
+    const ConePrimitive cone = MakeCone(c0, radii[0], c1, radii[1]);
+    EXPECT_EQ(cone.Nested, radii[0] == 2.5);
+    check(
+      records::MakeRound(cone), [&](const Point3& p) { return ConeDistance(cone, p).Distance; });
+  }
+  const SpherePrimitive ball{ c1, 0.4 };
+  check(
+    records::MakeRound(ball), [&](const Point3& p) { return SphereDistance(ball, p).Distance; });
+  const MedialMesh m = OneSlab();
+  const SlabPrimitive slab =
+    MakeSlab({ m.Centers[0], m.Centers[1], m.Centers[2] }, { m.Radii[0], m.Radii[1], m.Radii[2] });
+  records::Slab record;
+  ASSERT_TRUE(records::MakeSlab(slab, record));
+  check(record, [&](const Point3& p) { return SlabInteriorDistance(slab, p).Distance; });
+  // A ball holding the other two: no tangent planes, an empty interior.
+  const SlabPrimitive swallowed = MakeSlab({ c0, c1, Point3{ 0.5, 0.5, 0.5 } }, { 3.0, 0.1, 0.1 });
+  EXPECT_FALSE(swallowed.HasTangentPlanes);
+  EXPECT_FALSE(records::MakeSlab(swallowed, record));
 }
 
 // Inside, -distance is the depth: the closest boundary point it names is on

@@ -4,6 +4,7 @@
 // EnvelopeDistance.cxx scan.
 #include "Envelope/EnvelopeDistance.h"
 
+#include "Envelope/PrimitiveRecords.h"
 #include "Geometry/Vec3.h"
 
 #include <algorithm>
@@ -134,47 +135,23 @@ MedialEnvelope::MedialEnvelope(const MedialMesh& mesh, bool accelerate)
   }
   for (std::size_t a = 0; a < this->Active.size(); ++a)
   {
+    // Spheres and nested cones are kind 0 (a ball: the first four fields
+    // are its centre and radius), the other cones kind 1.
     Compact& k = this->Records[a];
-    double* d = k.D;
-    auto store = [](double* to, const Point3& x) { std::copy(x.begin(), x.end(), to); };
     const PrimitiveRef& ref = this->Active[a];
-    if (ref.Kind == PrimitiveKind::Sphere)
+    if (ref.Kind == PrimitiveKind::Slab)
     {
-      k.Kind = 0;
-      store(d, this->SphereList[ref.Id].Center);
-      d[3] = this->SphereList[ref.Id].Radius;
-    }
-    else if (ref.Kind == PrimitiveKind::Cone)
-    {
-      const ConePrimitive& cone = this->ConeList[ref.Id];
-      const int big = cone.Nested ? cone.Big : 0;
-      k.Kind = cone.Nested ? 0 : 1;
-      store(d, cone.C[big]);
-      d[3] = cone.R[big];
-      store(d + 4, cone.Axis);
-      d[7] = cone.SinPhi;
-      d[8] = cone.CosPhi;
-      d[9] = cone.Length * cone.CosPhi;
-      store(d + 10, cone.C[1]);
-      d[13] = cone.R[1];
-    }
-    else
-    {
-      const SlabPrimitive& slab = this->SlabList[ref.Id];
+      records::Slab slab;
+      records::MakeSlab(this->SlabList[ref.Id], slab); // active slabs have tangent planes
       k.Kind = 2;
-      store(d, slab.C[0]);
-      store(d + 3, slab.PlaneNormal);
-      store(d + 6, slab.Normals[0]);
-      store(d + 9, slab.Normals[1]);
-      d[12] = slab.Offsets[0];
-      d[13] = slab.Offsets[1];
-      d[14] = slab.Gamma;
-      store(d + 15, slab.E1);
-      store(d + 18, slab.E2);
-      d[21] = slab.InvG11;
-      d[22] = slab.InvG12;
-      d[23] = slab.InvG22;
+      std::copy(slab.begin(), slab.end(), k.D);
+      continue;
     }
+    const records::Round round = ref.Kind == PrimitiveKind::Sphere
+      ? records::MakeRound(this->SphereList[ref.Id])
+      : records::MakeRound(this->ConeList[ref.Id]);
+    k.Kind = ref.Kind == PrimitiveKind::Cone && !this->ConeList[ref.Id].Nested ? 1 : 0;
+    std::copy(round.begin(), round.end(), k.D);
   }
 
   // Each primitive has two boxes: of its balls (the primitive's own box) and
@@ -337,19 +314,10 @@ void MedialEnvelope::BuildLeafBlocks()
       }
     }
   };
-  // Spheres (and nested cones) become cones with a zero axis, sin 1 and
-  // cos 0, which always take the C0 cap: the same value.
+  // (Spheres and nested cones are stored as cones with a zero axis, sin 1
+  // and cos 0, which always take the C0 cap: records::MakeRound.)
   auto round = [&](std::uint32_t position, double* out)
-  {
-    const Compact& k = this->Records[position];
-    std::copy_n(k.D, pairs::RoundFields, out);
-    if (k.Kind == 0)
-    {
-      const double sphere[pairs::RoundFields] = { k.D[0], k.D[1], k.D[2], k.D[3], 0, 0, 0, 1, 0,
-        inf, k.D[0], k.D[1], k.D[2], k.D[3] };
-      std::copy_n(sphere, pairs::RoundFields, out);
-    }
-  };
+  { std::copy_n(this->Records[position].D, pairs::RoundFields, out); };
   auto slab = [&](std::uint32_t position, double* out)
   { std::copy_n(this->Records[position].D, pairs::SlabFields, out); };
   for (std::size_t n = 0; n < nodes.size(); ++n)

@@ -109,13 +109,19 @@ double ConeLateralArea(const ConePrimitive& cone)
 
 SlabPrimitive MakeSlab(const std::array<Point3, 3>& c, const std::array<double, 3>& r)
 {
-  SlabPrimitive slab;
-  slab.C = c;
-  slab.R = r;
+  SlabPrimitive slab = MakeSlabInterior(c, r);
   for (int e = 0; e < 3; ++e)
   {
     slab.Edges[e] = MakeCone(c[e], r[e], c[(e + 1) % 3], r[(e + 1) % 3]);
   }
+  return slab;
+}
+
+SlabPrimitive MakeSlabInterior(const std::array<Point3, 3>& c, const std::array<double, 3>& r)
+{
+  SlabPrimitive slab;
+  slab.C = c;
+  slab.R = r;
   slab.HasTangentPlanes = false;
   slab.E1 = c[1] - c[0];
   slab.E2 = c[2] - c[0];

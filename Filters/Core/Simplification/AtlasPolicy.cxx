@@ -468,17 +468,24 @@ bool AtlasPolicy::WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b,
     scratch.ProvenTarget = target;
     scratch.ProvenClearance = clearance;
   }
-  auto& cones = scratch.Cones;
-  cones.clear();
+  // Every Atlas site's value over the primitives the collapse leaves around
+  // the merged ball, each primitive at all the sites at once.
+  auto& rounds = scratch.RoundRecords;
+  rounds.clear();
   ForEachInUnion(mesh.Neighbours(a), mesh.Neighbours(b),
     [&](Index u, bool)
     {
       if (u != a && u != b)
       {
-        cones.push_back(MakeCone(ball.Center, ball.Radius, mesh.Position(u), mesh.SphereOf(u)[3]));
+        rounds.push_back(records::MakeRound(
+          MakeCone(ball.Center, ball.Radius, mesh.Position(u), mesh.SphereOf(u)[3])));
       }
     });
-  auto& slabs = scratch.Slabs;
+  if (rounds.empty()) // (every cone holds the ball)
+  {
+    rounds.push_back(records::MakeRound(ball));
+  }
+  auto& slabs = scratch.SlabRecords;
   slabs.clear();
   for (const auto& [face, id] : scratch.FaceKeys)
   {
@@ -490,30 +497,58 @@ bool AtlasPolicy::WithinBound(const MedialEdgeCollapse& mesh, Index a, Index b,
       c[k] = merged ? ball.Center : mesh.Position(face[k]);
       r[k] = merged ? ball.Radius : mesh.SphereOf(face[k])[3];
     }
-    slabs.push_back(MakeSlab(c, r));
+    records::Slab record;
+    if (records::MakeSlab(MakeSlabInterior(c, r), record))
+    {
+      slabs.push_back(record);
+    }
   }
-  bool within = true;
+  auto& x = scratch.SiteX;
+  auto& y = scratch.SiteY;
+  auto& z = scratch.SiteZ;
+  x.clear();
+  y.clear();
+  z.clear();
   ForEachInUnion(this->Atlas[a], this->Atlas[b],
     [&](Index s, bool)
     {
-      if (!within)
-      {
-        return;
-      }
-      const Point3& p = this->Site[s];
-      // (Every cone holds the ball.)
-      double d = cones.empty() ? SphereDistance(ball, p).Distance : HUGE_VAL;
-      for (const ConePrimitive& cone : cones)
-      {
-        d = std::min(d, ConeDistance(cone, p).Distance);
-      }
-      for (const SlabPrimitive& slab : slabs)
-      {
-        d = std::min(d, SlabInteriorDistance(slab, p).Distance);
-      }
-      within = std::abs(d) <= this->ErrorBound;
+      x.push_back(this->Site[s][0]);
+      y.push_back(this->Site[s][1]);
+      z.push_back(this->Site[s][2]);
     });
-  return within;
+  const std::size_t count = x.size();
+  if (count % 2 == 1) // the lanes read a pair at a time
+  {
+    x.push_back(x.back());
+    y.push_back(y.back());
+    z.push_back(z.back());
+  }
+  auto& values = scratch.SiteValues;
+  values.assign(x.size(), HUGE_VAL);
+  // In runs of sites, so that a collapse that fails stops early.
+  constexpr std::size_t Run = 32;
+  for (std::size_t first = 0; first < count; first += Run)
+  {
+    const records::PointLanes sites{ x.data() + first, y.data() + first, z.data() + first,
+      std::min(Run, count - first) };
+    double* value = values.data() + first;
+    for (const records::Round& record : rounds)
+    {
+      records::LowerTo(record, sites, value);
+    }
+    for (const records::Slab& record : slabs)
+    {
+      records::LowerTo(record, sites, value);
+    }
+    for (std::size_t i = 0; i < sites.Count; ++i)
+    {
+      if (!(std::abs(value[i]) <= this->ErrorBound))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
 }
 
 bool AtlasPolicy::RaiseBound()

@@ -5,6 +5,7 @@
 #ifndef medialaxis_EdgeCollapse_h
 #define medialaxis_EdgeCollapse_h
 
+#include "Envelope/PrimitiveRecords.h"
 #include "Geometry/Vec3.h"
 #include "Mesh/MedialMesh.h"
 #include "Mesh/MedialMeshQuality.h"
@@ -98,8 +99,9 @@ struct CollapseScratch
   // For policies.
   std::vector<std::pair<Point3, double>> Anchors;
   std::vector<Index> Indices;
-  std::vector<ConePrimitive> Cones;
-  std::vector<SlabPrimitive> Slabs;
+  std::vector<records::Round> RoundRecords;
+  std::vector<records::Slab> SlabRecords;
+  std::vector<double> SiteX, SiteY, SiteZ, SiteValues;
   // The sphere a policy last proved clear of the surface samples by
   // ProvenClearance (a lower bound of the distance from its centre to the
   // nearest one; -1: none), for the collapse that places it.

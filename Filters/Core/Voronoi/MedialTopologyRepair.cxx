@@ -856,6 +856,18 @@ TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,
     counts.FilledHoles += filled;
     left -= static_cast<long long>(filled);
   }
+  if (counts.FilledHoles > 0)
+  {
+    // The caps grew these by doubling: the spare room would stay reserved
+    // through the simplification, which sets the pipeline's peak.
+    result.Mesh.Centers.shrink_to_fit();
+    result.Mesh.Radii.shrink_to_fit();
+    result.Mesh.Faces.shrink_to_fit();
+    result.AtlasOffsets.shrink_to_fit();
+    result.AtlasSites.shrink_to_fit();
+    result.FaceSitePair.shrink_to_fit();
+    result.SiteClearance.shrink_to_fit();
+  }
   return counts;
 }
 }

@@ -13,18 +13,20 @@
 #include "Voronoi/MedialTopologyRepair.h"
 #include "Voronoi/ThinPartRepair.h"
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Cartesian_converter.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
-#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -47,10 +49,44 @@ using CellBase =
 using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
 using Delaunay = CGAL::Delaunay_triangulation_3<K, Tds>;
 
-using SurfaceMesh = CGAL::Surface_mesh<KPoint>;
-using Primitive = CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>;
+// The AABB tree's primitives are the surface's triangle numbers, read from
+// the TriangleMesh itself (no CGAL copy of the mesh: 30 MB less on a
+// 268,686-triangle surface). Corners and reference points are those CGAL's
+// face-graph primitive gives a face added as (a, b, c), so the tree, and
+// every answer, is the same as over a Surface_mesh.
+struct TriangleOfIndex
+{
+  using key_type = Index;
+  using value_type = K::Triangle_3;
+  using reference = value_type;
+  using category = boost::readable_property_map_tag;
+  const TriangleMesh* Surface = nullptr;
+  friend value_type get(const TriangleOfIndex& map, Index t)
+  {
+    const Triangle& tri = map.Surface->Triangles[t];
+    const auto& p = map.Surface->Points;
+    return value_type(KPoint(p[tri[0]][0], p[tri[0]][1], p[tri[0]][2]),
+      KPoint(p[tri[1]][0], p[tri[1]][1], p[tri[1]][2]),
+      KPoint(p[tri[2]][0], p[tri[2]][1], p[tri[2]][2]));
+  }
+};
+struct FirstCornerOfIndex
+{
+  using key_type = Index;
+  using value_type = KPoint;
+  using reference = value_type;
+  using category = boost::readable_property_map_tag;
+  const TriangleMesh* Surface = nullptr;
+  friend value_type get(const FirstCornerOfIndex& map, Index t)
+  {
+    const Point3& p = map.Surface->Points[map.Surface->Triangles[t][0]];
+    return value_type(p[0], p[1], p[2]);
+  }
+};
+using Primitive =
+  CGAL::AABB_primitive<Index, TriangleOfIndex, FirstCornerOfIndex, CGAL::Tag_true, CGAL::Tag_false>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
-using SideOfMesh = CGAL::Side_of_triangle_mesh<SurfaceMesh, K, CGAL::Default, Tree>;
+using SideOfTree = CGAL::internal::Point_inside_vertical_ray_cast<K, Tree>;
 
 Point3 ToPoint(const KPoint& p)
 {
@@ -119,21 +155,12 @@ public:
     {
       return;
     }
-    std::vector<SurfaceMesh::Vertex_index> vertices;
-    vertices.reserve(this->Surface.Points.size());
-    for (const Point3& p : this->Surface.Points)
-    {
-      vertices.push_back(this->Mesh.add_vertex(ToKernel(p)));
-    }
-    for (const Triangle& t : this->Surface.Triangles)
-    {
-      this->Mesh.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]);
-    }
-    this->TreePtr =
-      std::make_unique<Tree>(faces(this->Mesh).first, faces(this->Mesh).second, this->Mesh);
+    const Index triangles = static_cast<Index>(this->Surface.Triangles.size());
+    this->TreePtr = std::make_unique<Tree>(boost::counting_iterator<Index>(0),
+      boost::counting_iterator<Index>(triangles), TriangleOfIndex{ &this->Surface },
+      FirstCornerOfIndex{ &this->Surface });
     this->TreePtr->build();
     this->TreePtr->accelerate_distance_queries();
-    this->Side = std::make_unique<SideOfMesh>(*this->TreePtr);
 
     // Pseudo-normals: faces, and angle-weighted at vertices.
     const std::size_t nt = this->Surface.Triangles.size();
@@ -155,7 +182,10 @@ public:
     }
   }
 
-  bool Inside(const Point3& p) const { return (*this->Side)(ToKernel(p)) == CGAL::ON_BOUNDED_SIDE; }
+  bool Inside(const Point3& p) const
+  {
+    return SideOfTree()(ToKernel(p), *this->TreePtr) == CGAL::ON_BOUNDED_SIDE;
+  }
 
   /// Inside test by the closest surface point and the angle-weighted
   /// pseudo-normal of the face, edge or vertex it lies on (Baerentzen and
@@ -164,11 +194,10 @@ public:
   /// `nearPoint` on triangle `nearTriangle` bounds the search.
   bool InsideByPseudoNormal(const Point3& p, const Point3& nearPoint, Index nearTriangle) const
   {
-    const Tree::Point_and_primitive_id hint(ToKernel(nearPoint),
-      SurfaceMesh::Face_index(static_cast<SurfaceMesh::size_type>(nearTriangle)));
+    const Tree::Point_and_primitive_id hint(ToKernel(nearPoint), nearTriangle);
     const auto hit = this->TreePtr->closest_point_and_primitive(ToKernel(p), hint);
     const Point3 q = ToPoint(hit.first);
-    const Index f = static_cast<Index>(hit.second.idx());
+    const Index f = hit.second;
     const Triangle& t = this->Surface.Triangles[f];
     const Point3 &a = this->Surface.Points[t[0]], &b = this->Surface.Points[t[1]],
                  &c = this->Surface.Points[t[2]];
@@ -215,14 +244,12 @@ public:
 
   Index NearestTriangle(const Point3& p) const
   {
-    return static_cast<Index>(this->TreePtr->closest_point_and_primitive(ToKernel(p)).second.idx());
+    return this->TreePtr->closest_point_and_primitive(ToKernel(p)).second;
   }
 
 private:
   const TriangleMesh& Surface;
-  SurfaceMesh Mesh;
   std::unique_ptr<Tree> TreePtr;
-  std::unique_ptr<SideOfMesh> Side;
   TriangleAdjacency Adjacency;
   std::vector<Point3> FaceNormals, VertexNormals;
 };
@@ -329,6 +356,9 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
       }
     });
   std::vector<Delaunay::Cell_handle>().swap(cells);
+  // Every later pass works on the flat arrays: the triangulation (27 MB at
+  // 50,000 samples) goes before the medial mesh is built beside them.
+  delaunay.clear();
   // Each site's triangle (given, or the nearest) and its normal.
   std::vector<Index> siteTriangle = siteTrianglesIn;
   const Index nt = static_cast<Index>(surface.Triangles.size());

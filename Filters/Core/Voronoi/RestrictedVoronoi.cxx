@@ -110,6 +110,17 @@ struct BlockOutput
   std::vector<std::uint8_t> EdgeMask; // bit k: touches triangle edge k along a segment
   std::vector<double> TwiceArea;
   std::vector<Point3> WeightedCentroid; // sum of (twice-area x centroid)
+
+  void Clear()
+  {
+    this->Vertices.clear();
+    this->Sizes.clear();
+    this->Sites.clear();
+    this->Triangles.clear();
+    this->EdgeMask.clear();
+    this->TwiceArea.clear();
+    this->WeightedCentroid.clear();
+  }
 };
 
 struct ThreadState
@@ -119,6 +130,10 @@ struct ThreadState
   Polygon Poly, Scratch;
   std::vector<std::uint32_t> Ids;
   std::vector<double> D2;
+  // A block is clipped here, then copied out at its exact size: grown by
+  // doubling in place, the blocks held twice the room they needed (135 MB
+  // for 98 MB of polygons on a 268,686-triangle mesh at 50,000 samples).
+  BlockOutput Block;
 };
 
 class RvdBuilder
@@ -315,10 +330,12 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
         for (std::size_t block = r.begin(); block != r.end(); ++block)
         {
           const std::size_t t1 = std::min(nt, (block + 1) * BlockSize);
+          state.Block.Clear();
           for (std::size_t t = block * BlockSize; t < t1; ++t)
           {
-            builder.ProcessTriangle(static_cast<Index>(t), state, outputs[block]);
+            builder.ProcessTriangle(static_cast<Index>(t), state, state.Block);
           }
+          outputs[block] = state.Block; // copies allocate the exact size
         }
       });
     if (!report(0.1 + 0.8 * (batch + 1) / batches))

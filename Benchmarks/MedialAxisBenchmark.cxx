@@ -71,6 +71,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace medialaxis;
@@ -288,7 +289,7 @@ std::vector<Stage> RunPipeline(
   options.FinalFit = FinalFit;
   AtlasSimplifierResult simplified;
   stages.push_back(Measure(
-    "simplify", [&] { simplified = SimplifyMedialAxis(initial, rvd, sites.Points, options); }));
+    "simplify", [&] { simplified = SimplifyMedialAxis(std::move(initial), rvd, sites.Points, options); }));
   const MedialMesh& m = simplified.Medial.Mesh;
   std::printf(
     "  simplified MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "

@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 vtkStandardNewMacro(vtkAtlasMedialAxisSimplifier);
 
@@ -200,7 +201,7 @@ int vtkAtlasMedialAxisSimplifier::RequestData(
     return !this->GetAbortExecute();
   };
   const medialaxis::AtlasSimplifierResult result = medialaxis::RunWithThreads(this->NumberOfThreads,
-    [&] { return medialaxis::SimplifyMedialAxis(input, rvd, sites, options); });
+    [&] { return medialaxis::SimplifyMedialAxis(std::move(input), rvd, sites, options); });
   if (result.Aborted)
   {
     return 1;

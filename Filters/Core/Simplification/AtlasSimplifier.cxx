@@ -95,29 +95,16 @@ bool UsesFringeCollapses(const AtlasSimplifierOptions& o)
   return !o.PreserveSharpFeatures && o.TargetNumberOfVertices >= o.StrictLinkConditionVertexCount;
 }
 
-AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
-  const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
-  const AtlasSimplifierOptions& options)
+namespace
 {
-  // Setup (per-cell quadrics, Atlases, connectivity) plus the snapping and
-  // evaluation of every edge is the queue initialisation.
-  const auto start = std::chrono::steady_clock::now();
-  // Hair first: the collapses then start from the sheets that stand for the
-  // solid's thickness. Not below StrictLinkConditionVertexCount, where the
-  // medial axis of a tube must shrink to a curve under the strict link
-  // condition: from the eroded sheets the collapses stall short of it (a
-  // torus, 10,000 samples -> 50 spheres, keeps 52 triangles where it has
-  // none without the erosion; at 200 spheres it keeps 23 against 399
-  // without).
-  AtlasMedialMesh eroded;
-  HairErosionResult erosion;
-  const bool erode = UsesHairErosion(options);
-  if (erode)
-  {
-    eroded = input;
-    erosion = ErodeHair(eroded, sites, options.HairAngle);
-  }
-  const AtlasMedialMesh& initial = erode ? eroded : input;
+using Clock = std::chrono::steady_clock;
+
+// `owned`: `initial` when the caller gave it up; it is then freed as soon
+// as the collapses and the policy hold what they need of it.
+AtlasSimplifierResult Simplify(const AtlasMedialMesh& initial, AtlasMedialMesh* owned,
+  std::size_t erodedTriangles, Clock::time_point start, const RestrictedVoronoiDiagram& rvd,
+  const std::vector<Point3>& sites, const AtlasSimplifierOptions& options)
+{
   AtlasPolicy policy(initial, rvd, sites, options);
   EdgeCollapseOptions collapseOptions = CollapseOptions(options);
   // Fins, as the erosion, on organic shapes only (see UsesHairErosion).
@@ -126,13 +113,16 @@ AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
   collapseOptions.FoldAngle =
     UsesPleatGuard(options) ? std::max(options.PleatAngle, FoldAngleDegrees) : FoldAngleDegrees;
   MedialEdgeCollapse mesh(initial.Mesh, policy.Frame(), collapseOptions, policy);
-  const double setupSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (owned)
+  {
+    *owned = AtlasMedialMesh();
+  }
+  const double setupSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   const EdgeCollapseCounts counts = mesh.Run();
   AtlasSimplifierResult result;
   static_cast<EdgeCollapseCounts&>(result) = counts;
   result.QueueInitialisationSeconds += setupSeconds;
-  result.ErodedTriangles = erosion.RemovedTriangles;
+  result.ErodedTriangles = erodedTriangles;
   if (!counts.Aborted)
   {
     result.Medial = policy.Output(mesh);
@@ -193,5 +183,40 @@ AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
     }
   }
   return result;
+}
+} // namespace
+
+AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
+  const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
+  const AtlasSimplifierOptions& options)
+{
+  if (UsesHairErosion(options))
+  {
+    return SimplifyMedialAxis(AtlasMedialMesh(input), rvd, sites, options);
+  }
+  // Not eroded: the collapses copy what they need, the input stays as given.
+  return Simplify(input, nullptr, 0, Clock::now(), rvd, sites, options);
+}
+
+AtlasSimplifierResult SimplifyMedialAxis(AtlasMedialMesh&& input,
+  const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
+  const AtlasSimplifierOptions& options)
+{
+  // Setup (per-cell quadrics, Atlases, connectivity) plus the snapping and
+  // evaluation of every edge is the queue initialisation.
+  const Clock::time_point start = Clock::now();
+  // Hair first: the collapses then start from the sheets that stand for the
+  // solid's thickness. Not below StrictLinkConditionVertexCount, where the
+  // medial axis of a tube must shrink to a curve under the strict link
+  // condition: from the eroded sheets the collapses stall short of it (a
+  // torus, 10,000 samples -> 50 spheres, keeps 52 triangles where it has
+  // none without the erosion; at 200 spheres it keeps 23 against 399
+  // without).
+  std::size_t eroded = 0;
+  if (UsesHairErosion(options))
+  {
+    eroded = ErodeHair(input, sites, options.HairAngle).RemovedTriangles;
+  }
+  return Simplify(input, &input, eroded, start, rvd, sites, options);
 }
 } // namespace medialaxis

@@ -306,6 +306,14 @@ struct AtlasSimplifierResult : EdgeCollapseCounts
 AtlasSimplifierResult SimplifyMedialAxis(const AtlasMedialMesh& input,
   const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
   const AtlasSimplifierOptions& options = AtlasSimplifierOptions());
+
+/// The same, for a caller done with `input`: the hair is eroded in place
+/// instead of in a copy, and the input's arrays are freed once the
+/// collapses hold their own (the whole initial MAT less at the peak).
+/// `input` is left empty.
+AtlasSimplifierResult SimplifyMedialAxis(AtlasMedialMesh&& input,
+  const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
+  const AtlasSimplifierOptions& options = AtlasSimplifierOptions());
 }
 
 #endif

@@ -21,70 +21,61 @@ EdgeKey Key(Index a, Index b)
 void Compact(VoronoiMedialAxisResult& result, const std::vector<char>& vertexAlive,
   const std::vector<char>& faceAlive, const std::vector<EdgeKey>& edges)
 {
+  // In place: a kept item only moves to a lower index, so each array is
+  // written over its own front (a copy beside the old complex was 27 MB at
+  // 170,000 spheres).
   MedialMesh& mesh = result.Mesh;
   std::vector<Index> newId(mesh.Centers.size(), -1);
-  MedialMesh out;
-  std::vector<Index> offsets{ 0 }, sites;
-  std::vector<double> clearance;
   const bool withClearance = result.SiteClearance.size() == mesh.Centers.size();
-  // Exact sizes: the complex is large, and the old one is alive meanwhile.
-  std::size_t vertices = 0, atlasSites = 0, faces = 0;
-  for (std::size_t v = 0; v < mesh.Centers.size(); ++v)
-  {
-    if (vertexAlive[v])
-    {
-      ++vertices;
-      atlasSites += static_cast<std::size_t>(result.AtlasOffsets[v + 1] - result.AtlasOffsets[v]);
-    }
-  }
-  for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
-  {
-    faces += faceAlive[f] ? 1 : 0;
-  }
-  out.Centers.reserve(vertices);
-  out.Radii.reserve(vertices);
-  clearance.reserve(withClearance ? vertices : 0);
-  offsets.reserve(vertices + 1);
-  sites.reserve(atlasSites);
-  out.Faces.reserve(faces);
-  out.Edges.reserve(edges.size());
+  std::vector<Index>& offsets = result.AtlasOffsets;
+  std::vector<Index>& sites = result.AtlasSites;
+  std::size_t vertices = 0, written = 0;
   for (std::size_t v = 0; v < mesh.Centers.size(); ++v)
   {
     if (!vertexAlive[v])
     {
       continue;
     }
-    newId[v] = static_cast<Index>(out.Centers.size());
-    out.Centers.push_back(mesh.Centers[v]);
-    out.Radii.push_back(mesh.Radii[v]);
+    newId[v] = static_cast<Index>(vertices);
+    mesh.Centers[vertices] = mesh.Centers[v];
+    mesh.Radii[vertices] = mesh.Radii[v];
     if (withClearance)
     {
-      clearance.push_back(result.SiteClearance[v]);
+      result.SiteClearance[vertices] = result.SiteClearance[v];
     }
-    sites.insert(sites.end(), result.AtlasSites.begin() + result.AtlasOffsets[v],
-      result.AtlasSites.begin() + result.AtlasOffsets[v + 1]);
-    offsets.push_back(static_cast<Index>(sites.size()));
+    // offsets[v] is read before offsets[vertices + 1] (<= v + 1) is written.
+    const Index first = offsets[v], last = offsets[v + 1];
+    for (Index k = first; k < last; ++k)
+    {
+      sites[written++] = sites[k];
+    }
+    offsets[vertices + 1] = static_cast<Index>(written);
+    ++vertices;
   }
-  std::vector<std::array<Index, 2>> pairs;
-  pairs.reserve(faces);
+  mesh.Centers.resize(vertices);
+  mesh.Radii.resize(vertices);
+  result.SiteClearance.resize(withClearance ? vertices : 0);
+  offsets.resize(vertices + 1);
+  sites.resize(written);
+  std::size_t faces = 0;
   for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
   {
     if (faceAlive[f])
     {
-      const auto& t = mesh.Faces[f];
-      out.Faces.push_back({ newId[t[0]], newId[t[1]], newId[t[2]] });
-      pairs.push_back(result.FaceSitePair[f]);
+      const auto t = mesh.Faces[f];
+      mesh.Faces[faces] = { newId[t[0]], newId[t[1]], newId[t[2]] };
+      result.FaceSitePair[faces] = result.FaceSitePair[f];
+      ++faces;
     }
   }
+  mesh.Faces.resize(faces);
+  result.FaceSitePair.resize(faces);
+  mesh.Edges.clear();
+  mesh.Edges.reserve(edges.size());
   for (const EdgeKey& e : edges)
   {
-    out.Edges.push_back({ newId[e[0]], newId[e[1]] });
+    mesh.Edges.push_back({ newId[e[0]], newId[e[1]] });
   }
-  mesh = std::move(out);
-  result.AtlasOffsets = std::move(offsets);
-  result.AtlasSites = std::move(sites);
-  result.FaceSitePair = std::move(pairs);
-  result.SiteClearance = std::move(clearance);
 }
 }
 

@@ -318,6 +318,33 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
       s.Stamp.assign(ns, 0);
       return s;
     });
+  // Each batch is appended in block (= triangle) order as soon as it is
+  // done, and its blocks freed: the workers then hold one batch at a time,
+  // not every block beside the result (with a heap per thread, that was
+  // 145 MB more on a 268,686-triangle surface at 50,000 samples).
+  rvd.CellArea.assign(ns, 0.0);
+  rvd.CellRadius.assign(ns, 0.0);
+  std::vector<Point3> weighted(ns, Point3{ 0.0, 0.0, 0.0 });
+  std::vector<std::uint8_t> edgeMask;
+  auto append = [&](BlockOutput& o)
+  {
+    rvd.Vertices.insert(rvd.Vertices.end(), o.Vertices.begin(), o.Vertices.end());
+    for (std::size_t p = 0; p < o.Sites.size(); ++p)
+    {
+      rvd.Offsets.push_back(rvd.Offsets.back() + o.Sizes[p]);
+      rvd.PolygonSite.push_back(o.Sites[p]);
+      rvd.PolygonTriangle.push_back(o.Triangles[p]);
+      edgeMask.push_back(o.EdgeMask[p]);
+      rvd.CellArea[o.Sites[p]] += 0.5 * o.TwiceArea[p];
+      double& reach = rvd.CellRadius[o.Sites[p]];
+      for (Index k = rvd.Offsets[rvd.Offsets.size() - 2]; k < rvd.Offsets.back(); ++k)
+      {
+        reach = std::max(reach, Norm(rvd.Vertices[k] - sites[o.Sites[p]]));
+      }
+      weighted[o.Sites[p]] = weighted[o.Sites[p]] + o.WeightedCentroid[p];
+    }
+    o = BlockOutput();
+  };
   // Batches between which progress is reported and abort is honoured.
   const std::size_t batches = std::min<std::size_t>(20, blocks);
   for (std::size_t batch = 0; batch < batches; ++batch)
@@ -338,6 +365,29 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
           outputs[block] = state.Block; // copies allocate the exact size
         }
       });
+    if (batch == 0)
+    {
+      // Room for all, extrapolated from the first batch with 5% to spare
+      // (more grows the arrays as usual).
+      std::size_t np = 0, nvert = 0;
+      for (std::size_t b = first; b < last; ++b)
+      {
+        np += outputs[b].Sites.size();
+        nvert += outputs[b].Vertices.size();
+      }
+      const double scale = 1.05 * static_cast<double>(blocks) / static_cast<double>(last);
+      np = static_cast<std::size_t>(scale * static_cast<double>(np)) + 16;
+      nvert = static_cast<std::size_t>(scale * static_cast<double>(nvert)) + 64;
+      rvd.Vertices.reserve(nvert);
+      rvd.Offsets.reserve(np + 1);
+      rvd.PolygonSite.reserve(np);
+      rvd.PolygonTriangle.reserve(np);
+      edgeMask.reserve(np);
+    }
+    for (std::size_t b = first; b < last; ++b)
+    {
+      append(outputs[b]);
+    }
     if (!report(0.1 + 0.8 * (batch + 1) / batches))
     {
       rvd = RestrictedVoronoiDiagram();
@@ -345,42 +395,21 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
       return rvd;
     }
   }
-
-  // Concatenate in block (= triangle) order.
-  std::size_t np = 0, nvert = 0;
-  for (const auto& o : outputs)
+  std::vector<BlockOutput>().swap(outputs);
+  // An estimate far above the count (triangles much larger in the first
+  // batch than elsewhere) would otherwise stay reserved to the end.
+  auto fit = [](auto& array)
   {
-    np += o.Sites.size();
-    nvert += o.Vertices.size();
-  }
-  rvd.Vertices.reserve(nvert);
-  rvd.Offsets.reserve(np + 1);
-  rvd.PolygonSite.reserve(np);
-  rvd.PolygonTriangle.reserve(np);
-  std::vector<std::uint8_t> edgeMask;
-  edgeMask.reserve(np);
-  rvd.CellArea.assign(ns, 0.0);
-  rvd.CellRadius.assign(ns, 0.0);
-  std::vector<Point3> weighted(ns, Point3{ 0.0, 0.0, 0.0 });
-  for (auto& o : outputs)
-  {
-    rvd.Vertices.insert(rvd.Vertices.end(), o.Vertices.begin(), o.Vertices.end());
-    for (std::size_t p = 0; p < o.Sites.size(); ++p)
+    if (array.capacity() > array.size() + array.size() / 10)
     {
-      rvd.Offsets.push_back(rvd.Offsets.back() + o.Sizes[p]);
-      rvd.PolygonSite.push_back(o.Sites[p]);
-      rvd.PolygonTriangle.push_back(o.Triangles[p]);
-      edgeMask.push_back(o.EdgeMask[p]);
-      rvd.CellArea[o.Sites[p]] += 0.5 * o.TwiceArea[p];
-      double& reach = rvd.CellRadius[o.Sites[p]];
-      for (Index k = rvd.Offsets[rvd.Offsets.size() - 2]; k < rvd.Offsets.back(); ++k)
-      {
-        reach = std::max(reach, Norm(rvd.Vertices[k] - sites[o.Sites[p]]));
-      }
-      weighted[o.Sites[p]] = weighted[o.Sites[p]] + o.WeightedCentroid[p];
+      array.shrink_to_fit();
     }
-    o = BlockOutput(); // release memory early
-  }
+  };
+  fit(rvd.Vertices);
+  fit(rvd.Offsets);
+  fit(rvd.PolygonSite);
+  fit(rvd.PolygonTriangle);
+  const std::size_t np = rvd.PolygonSite.size();
   rvd.CellCentroid.resize(ns);
   for (std::size_t i = 0; i < ns; ++i)
   {

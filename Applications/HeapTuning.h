@@ -6,16 +6,15 @@
 // time. On virtual machines where a page fault is dear that was a third of
 // the run (bunny, 10,000 samples to 1,000 spheres: 0.67 s against 0.44 s).
 // The settings below keep blocks of up to 32 MB in the heap, keep freed
-// memory for reuse, grow the heap 64 MB at a time, back it with
-// transparent huge pages and keep one heap for all threads: with a heap per
-// thread, what a worker freed in one stage could not serve the main thread
-// in the next, and both heaps' high-water marks added up (igea, 50,000
-// samples to 5,000 spheres, two threads: 362 against 294-300 MB, no
-// difference in time measurable on two cores; the user's own
-// GLIBC_TUNABLES win, e.g. glibc.malloc.arena_max=8 on many cores). glibc reads them only at start-up (environment
+// memory for reuse, grow the heap 64 MB at a time and back it with
+// transparent huge pages. glibc reads them only at start-up (environment
 // variable GLIBC_TUNABLES, glibc 2.35 on), so the program starts itself
 // again once with them. Embedding applications (ParaView, pvpython, VTK
 // programs) get the same by starting with HeapTunables() in GLIBC_TUNABLES.
+// Not kept: one heap for all threads (arena_max=1) lowered igea's peak at
+// 50,000 samples on two threads from 362 to 294-300 MB, but made the bunny
+// at 200,000 samples 20% slower: the parallel stages allocate enough to
+// contend for a single heap.
 #ifndef MedialAxis_HeapTuning_h
 #define MedialAxis_HeapTuning_h
 
@@ -37,8 +36,7 @@ inline std::string HeapTunables()
 {
   std::string tunables = "glibc.malloc.mmap_threshold=33554432"
                          ":glibc.malloc.trim_threshold=4294967296"
-                         ":glibc.malloc.top_pad=67108864"
-                         ":glibc.malloc.arena_max=1";
+                         ":glibc.malloc.top_pad=67108864";
   std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
   const std::string modes{ std::istreambuf_iterator<char>(mode), std::istreambuf_iterator<char>() };
   if (modes.find("[always]") != std::string::npos || modes.find("[madvise]") != std::string::npos)

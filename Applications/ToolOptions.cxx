@@ -198,9 +198,8 @@ Options:
 
 Environment: the tool starts itself again with glibc's heap tuned for large
 blocks (GLIBC_TUNABLES: blocks up to 32 MB kept in the heap, freed memory
-kept, transparent huge pages, one heap for all threads), a third faster
-where page faults are dear (virtual machines) and lighter with several
-threads; MEDIALAXIS_TUNE_HEAP=0 turns that off, and tunables of
+kept, transparent huge pages), a third faster where page faults are dear
+(virtual machines); MEDIALAXIS_TUNE_HEAP=0 turns that off, and tunables of
 your own in GLIBC_TUNABLES (glibc.malloc.*) are left as they are.
 
 Exit codes: 0 done; 2 bad arguments; 3 unreadable or invalid input (the

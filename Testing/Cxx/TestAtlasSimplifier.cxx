@@ -42,6 +42,7 @@
 #include <map>
 #include <set>
 #include <tuple>
+#include <utility>
 
 using namespace medialaxis;
 using medialaxis::test::InitialMedialAxis;
@@ -445,6 +446,32 @@ TEST(AtlasSimplifier, SiteClearanceBoundsChangeNothing)
   EXPECT_EQ(a.Radii, b.Radii);
   EXPECT_EQ(a.Faces, b.Faces);
   EXPECT_EQ(with.Medial.AtlasSites, without.Medial.AtlasSites);
+}
+
+// A caller done with the initial MAT hands it over: the hair is eroded in
+// place and the arrays freed early, with the same result as from a copy.
+TEST(AtlasSimplifier, HandedOverInputGivesTheSameResult)
+{
+  const TriangleMesh shape = MakeDumbbell(2.0, 0.45, 0.2, 48);
+  SimplifiedRun run = InitialMedialAxis(shape, 4000);
+  AtlasSimplifierOptions options;
+  options.TargetNumberOfVertices = 300;
+  options.PreserveSharpFeatures = false; // organic: the erosion runs
+  ASSERT_TRUE(UsesHairErosion(options));
+  const AtlasSimplifierResult copied =
+    SimplifyMedialAxis(run.Initial, run.Rvd, run.Sites.Points, options);
+  const AtlasSimplifierResult handed =
+    SimplifyMedialAxis(std::move(run.Initial), run.Rvd, run.Sites.Points, options);
+  EXPECT_TRUE(run.Initial.Mesh.Centers.empty());
+  EXPECT_TRUE(run.Initial.AtlasSites.empty());
+  const MedialMesh &a = copied.Medial.Mesh, &b = handed.Medial.Mesh;
+  ASSERT_EQ(a.Centers.size(), b.Centers.size());
+  EXPECT_EQ(0, std::memcmp(a.Centers.data(), b.Centers.data(), a.Centers.size() * sizeof(Point3)));
+  EXPECT_EQ(a.Radii, b.Radii);
+  EXPECT_EQ(a.Faces, b.Faces);
+  EXPECT_EQ(copied.Medial.AtlasSites, handed.Medial.AtlasSites);
+  EXPECT_EQ(copied.ErodedTriangles, handed.ErodedTriangles);
+  EXPECT_GT(handed.ErodedTriangles + handed.Collapses, 0u);
 }
 
 // Without sharp features the collapses of distant edges are made in

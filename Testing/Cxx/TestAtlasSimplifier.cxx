@@ -417,6 +417,20 @@ TEST(AtlasSimplifier, OutputIsValidAndDeterministic)
   }
 }
 
+namespace
+{
+// Same spheres (bit for bit), faces and Atlases.
+void ExpectBitIdentical(const AtlasMedialMesh& p, const AtlasMedialMesh& q)
+{
+  const MedialMesh &a = p.Mesh, &b = q.Mesh;
+  ASSERT_EQ(a.Centers.size(), b.Centers.size());
+  EXPECT_EQ(0, std::memcmp(a.Centers.data(), b.Centers.data(), a.Centers.size() * sizeof(Point3)));
+  EXPECT_EQ(a.Radii, b.Radii);
+  EXPECT_EQ(a.Faces, b.Faces);
+  EXPECT_EQ(p.AtlasSites, q.AtlasSites);
+}
+}
+
 // The error bands test every merged ball against the nearest site; the
 // Voronoi stage's bounds on that distance, carried through the collapses,
 // decide most tests without a search and must never change an answer.
@@ -440,12 +454,7 @@ TEST(AtlasSimplifier, SiteClearanceBoundsChangeNothing)
   run.Initial.SiteClearance.clear();
   const AtlasSimplifierResult without =
     SimplifyMedialAxis(run.Initial, run.Rvd, run.Sites.Points, options);
-  const MedialMesh &a = with.Medial.Mesh, &b = without.Medial.Mesh;
-  ASSERT_EQ(a.Centers.size(), b.Centers.size());
-  EXPECT_EQ(0, std::memcmp(a.Centers.data(), b.Centers.data(), a.Centers.size() * sizeof(Point3)));
-  EXPECT_EQ(a.Radii, b.Radii);
-  EXPECT_EQ(a.Faces, b.Faces);
-  EXPECT_EQ(with.Medial.AtlasSites, without.Medial.AtlasSites);
+  ExpectBitIdentical(with.Medial, without.Medial);
 }
 
 // A caller done with the initial MAT hands it over: the hair is eroded in
@@ -464,12 +473,7 @@ TEST(AtlasSimplifier, HandedOverInputGivesTheSameResult)
     SimplifyMedialAxis(std::move(run.Initial), run.Rvd, run.Sites.Points, options);
   EXPECT_TRUE(run.Initial.Mesh.Centers.empty());
   EXPECT_TRUE(run.Initial.AtlasSites.empty());
-  const MedialMesh &a = copied.Medial.Mesh, &b = handed.Medial.Mesh;
-  ASSERT_EQ(a.Centers.size(), b.Centers.size());
-  EXPECT_EQ(0, std::memcmp(a.Centers.data(), b.Centers.data(), a.Centers.size() * sizeof(Point3)));
-  EXPECT_EQ(a.Radii, b.Radii);
-  EXPECT_EQ(a.Faces, b.Faces);
-  EXPECT_EQ(copied.Medial.AtlasSites, handed.Medial.AtlasSites);
+  ExpectBitIdentical(copied.Medial, handed.Medial);
   EXPECT_EQ(copied.ErodedTriangles, handed.ErodedTriangles);
   EXPECT_GT(handed.ErodedTriangles + handed.Collapses, 0u);
 }

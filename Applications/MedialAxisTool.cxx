@@ -495,6 +495,11 @@ int main(int argc, char** argv)
             << 100.0 * clean.FoldedEdgeFraction << "% of the sheet edges, boundary "
             << clean.BoundaryLength << " and junctions " << clean.JunctionLength
             << " diagonals long\n";
+  if (FieldValue(mat, "AddedSamples") > 0)
+  {
+    std::cout << "  sampled again: " << FieldValue(mat, "AddedSamples")
+              << " samples added on thin parts, where the first sampling missed handles\n";
+  }
   if (o.AutomaticPreset)
   {
     std::cout << "  preset: " << (o.Cad ? "cad" : "organic") << " (sharp-edge creases "
@@ -632,6 +637,8 @@ int main(int argc, char** argv)
          << ", \"CurveSkeleton\": " << curveSeconds << ", \"wall\": " << seconds
          << "},\n  \"peak_memory_mb\": " << PeakMegabytes()
          << ",\n  \"counts\": {\"sites\": " << FieldValue(mat, "Sites")
+         << ", \"added_samples\": " << FieldValue(mat, "AddedSamples")
+         << ", \"missing_handles\": " << FieldValue(mat, "MissingLoops")
          << ", \"initial_vertices\": " << FieldValue(mat, "InitialVertices")
          << ", \"initial_triangles\": " << FieldValue(mat, "InitialTriangles")
          << ", \"vertices\": " << mesh.Centers.size()

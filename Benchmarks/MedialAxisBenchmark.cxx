@@ -261,6 +261,26 @@ std::vector<Stage> RunPipeline(
       voronoi = ComputeVoronoiMedialAxis(
         mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature, voronoiOptions);
     }));
+  // As vtkStructuralMedialAxis: handles the medial axis missed are sampled
+  // again, denser on thin parts (rarely needed: never on the shared meshes).
+  for (int round = 1;
+       sampling.Adaptive && voronoi.MissingLoops > 0 && DenserOnThinParts(sampling.Sizing, round);
+       ++round)
+  {
+    stages.push_back(Measure("resampling",
+      [&]
+      {
+        sites = SampleSurface(mesh, sampling);
+        rvd = ComputeRestrictedVoronoi(mesh, sites.Points);
+        VoronoiMedialAxisOptions voronoiOptions;
+        voronoiOptions.CoveringRadius =
+          *std::max_element(rvd.CellRadius.begin(), rvd.CellRadius.end());
+        voronoi = ComputeVoronoiMedialAxis(
+          mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature, voronoiOptions);
+      }));
+    std::printf("  resampled thin parts (round %d): %zu samples, %zu added, %zu handles missed\n",
+      round, sites.Points.size(), sites.AddedSamples, voronoi.MissingLoops);
+  }
   std::printf("  initial MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "
               "%zu Delaunay cells, %zu exact inside tests\n",
     voronoi.Mesh.Centers.size(), voronoi.Mesh.Faces.size(), EdgesNotOnFaces(voronoi.Mesh).size(),
@@ -288,8 +308,8 @@ std::vector<Stage> RunPipeline(
   options.TopologyGuardVertexCount = TopologyGuard;
   options.FinalFit = FinalFit;
   AtlasSimplifierResult simplified;
-  stages.push_back(Measure(
-    "simplify", [&] { simplified = SimplifyMedialAxis(std::move(initial), rvd, sites.Points, options); }));
+  stages.push_back(Measure("simplify",
+    [&] { simplified = SimplifyMedialAxis(std::move(initial), rvd, sites.Points, options); }));
   const MedialMesh& m = simplified.Medial.Mesh;
   std::printf(
     "  simplified MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "

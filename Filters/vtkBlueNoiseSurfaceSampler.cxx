@@ -3,6 +3,7 @@
 
 #include "Sampling/BlueNoiseSampler.h"
 #include "Support/Parallel.h"
+#include "vtkMedialMeshConversion.h"
 #include "vtkSurfacePreparation.h"
 
 #include "vtkCellArray.h"
@@ -43,6 +44,7 @@ int vtkBlueNoiseSurfaceSampler::RequestData(
   options.Adaptive = this->Adaptive;
   options.Sizing.SpacingPerThickness = this->ThinPartSpacing;
   options.Sizing.FinestSpacingRatio = this->FinestSpacingRatio;
+  options.Sizing.ExtraSampleFraction = this->ThinPartExtraSamples;
   options.Progress = [this](double f)
   {
     this->UpdateProgress(0.05 + 0.9 * f);
@@ -101,6 +103,7 @@ int vtkBlueNoiseSurfaceSampler::RequestData(
     output->GetPointData()->AddArray(thickness);
     output->GetPointData()->AddArray(spacing);
   }
+  medialaxis::AddFieldValue(output, "AddedSamples", static_cast<long long>(samples.AddedSamples));
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -115,5 +118,6 @@ void vtkBlueNoiseSurfaceSampler::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Adaptive: " << this->Adaptive << "\n";
   os << indent << "ThinPartSpacing: " << this->ThinPartSpacing << "\n";
   os << indent << "FinestSpacingRatio: " << this->FinestSpacingRatio << "\n";
+  os << indent << "ThinPartExtraSamples: " << this->ThinPartExtraSamples << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -25,7 +25,8 @@
  * numbering for a clean triangle mesh). With Adaptive on, also
  * `LocalThickness` (the solid's thickness behind the site, of the nearest
  * probe; -1 where no ray found the far side) and `Spacing` (the spacing the
- * sizing field asked for there).
+ * sizing field asked for there), and field data `AddedSamples` (the
+ * samples beyond NumberOfSamples, see ThinPartExtraSamples).
  *
  * The result is identical for identical input, parameters and RandomSeed,
  * whatever NumberOfThreads.
@@ -92,6 +93,18 @@ public:
   ///@}
 
   ///@{
+  /// With Adaptive: where thin parts want a spacing finer than
+  /// FinestSpacingRatio allows (a handle much thinner than the budget can
+  /// follow, which the medial axis would lose), give it to them with up to
+  /// this fraction of NumberOfSamples in samples beyond it (default 0:
+  /// exactly NumberOfSamples). The output's field data `AddedSamples` says
+  /// how many were added. vtkStructuralMedialAxis sets it when the medial
+  /// axis misses a handle.
+  vtkSetClampMacro(ThinPartExtraSamples, double, 0.0, 10.0);
+  vtkGetMacro(ThinPartExtraSamples, double);
+  ///@}
+
+  ///@{
   /// Threads to use (0 = all cores, default). Does not change the result.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
@@ -110,6 +123,7 @@ protected:
   bool Adaptive = false;
   double ThinPartSpacing = 0.5;
   double FinestSpacingRatio = 0.25;
+  double ThinPartExtraSamples = 0.0;
   int NumberOfThreads = 0;
 
 private:

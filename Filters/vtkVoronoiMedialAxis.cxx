@@ -157,7 +157,7 @@ int vtkVoronoiMedialAxis::RequestData(
       { "DroppedPockets", result.DroppedPockets }, { "SpanningCells", result.SpanningCells },
       { "OpenedVoids", result.OpenedVoids }, { "EdgesAcrossSurface", result.EdgesAcrossSurface },
       { "JoinedPieces", result.JoinedPieces }, { "CutLoops", result.CutLoops },
-      { "FilledHoles", result.FilledHoles } })
+      { "FilledHoles", result.FilledHoles }, { "MissingLoops", result.MissingLoops } })
   {
     medialaxis::AddFieldValue(output, name, static_cast<long long>(value));
   }

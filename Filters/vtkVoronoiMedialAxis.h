@@ -32,7 +32,11 @@
  * vtkAtlasMedialAxisSimplifier uses to skip searches; and field data
  * with counts (`DelaunayCells`, `InsideCells`, `AmbiguousInsideTests`,
  * `WeldedCells`, `FilteredTriangles`, `DroppedPockets`, `SpanningCells`,
- * `OpenedVoids`, `JoinedPieces`, `CutLoops`, `FilledHoles`). A solid's
+ * `OpenedVoids`, `JoinedPieces`, `CutLoops`, `FilledHoles`, and
+ * `MissingLoops`: handles of the surface the complex has no loop round,
+ * which only denser samples there bring back; vtkStructuralMedialAxis then
+ * samples again with vtkBlueNoiseSurfaceSampler's ThinPartExtraSamples).
+ * A solid's
  * medial axis encloses no void: where the Voronoi complex does (around a
  * pocket of cells whose circumcentres fell outside), the face of least
  * radius on the void's boundary is left out. With RepairTopology, the

@@ -330,6 +330,52 @@ TEST(BlueNoiseSampler, AdaptiveIsDeterministicAndUniformWithoutThinParts)
   EXPECT_TRUE(Identical(SampleAdaptively(ball, 2000), Sample(ball, 2000)));
 }
 
+TEST(BlueNoiseSampler, ThinPartsFinerThanTheFinestRatioGrowTheCount)
+{
+  // With the finest spacing held at half the thick parts' (about 0.027 at
+  // 400 samples), the neck's wanted spacing (0.02, half its diameter) is out
+  // of reach within the budget; ExtraSampleFraction pays for it beyond.
+  auto sample = [](double extra)
+  {
+    SamplingOptions options;
+    options.NumberOfSamples = 400;
+    options.Seed = 3;
+    options.Adaptive = true;
+    options.Sizing.FinestSpacingRatio = 0.5;
+    options.Sizing.ExtraSampleFraction = extra;
+    return SampleSurface(Dumbbell(), options);
+  };
+  const SurfaceSamples capped = sample(0.0), grown = sample(0.5);
+  EXPECT_EQ(capped.Points.size(), 400u);
+  EXPECT_EQ(capped.AddedSamples, 0u);
+  EXPECT_GT(grown.AddedSamples, 0u);
+  EXPECT_LE(grown.AddedSamples, 200u);
+  EXPECT_EQ(grown.Points.size(), 400u + grown.AddedSamples);
+  auto neckCount = [](const SurfaceSamples& s)
+  { return std::count_if(s.Points.begin(), s.Points.end(), OnNeck); };
+  std::cout << "samples on the neck: within the budget " << neckCount(capped) << ", with "
+            << grown.AddedSamples << " more " << neckCount(grown) << "\n";
+  // Spacing 0.02 instead of about 0.027: (0.027 / 0.02)^2 = 1.8 times denser.
+  EXPECT_GE(neckCount(grown), 1.5 * neckCount(capped));
+  for (std::size_t i = 0; i < grown.Points.size(); ++i)
+  {
+    if (OnNeck(grown.Points[i]))
+    {
+      EXPECT_LE(grown.Spacing[i], 0.5 * grown.LocalThickness[i] + 1e-12);
+    }
+  }
+  EXPECT_TRUE(Identical(grown, RunWithThreads(1, [&] { return sample(0.5); })));
+  // Each round of DenserOnThinParts halves the thin parts' spacing and
+  // allows as many samples again as the round's number.
+  SizingOptions sizing;
+  EXPECT_FALSE(DenserOnThinParts(sizing, 0));
+  EXPECT_TRUE(DenserOnThinParts(sizing, 1));
+  EXPECT_EQ(sizing.SpacingPerThickness, 0.25);
+  EXPECT_EQ(sizing.ExtraSampleFraction, 1.0);
+  EXPECT_TRUE(DenserOnThinParts(sizing, 3));
+  EXPECT_FALSE(DenserOnThinParts(sizing, 4));
+}
+
 TEST(BlueNoiseSurfaceSampler, AdaptiveOutputsThicknessAndSpacing)
 {
   vtkNew<vtkBlueNoiseSurfaceSampler> sampler;

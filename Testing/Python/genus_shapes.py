@@ -96,5 +96,22 @@ def double_torus(n=100):
     return level_set(f, (-1.1, 1.1, -0.65, 0.65, -0.25, 0.25), n)
 
 
+def ball_with_thin_handles(n=240):
+    """A ball of radius 0.5 with three handles: tori of radius 0.2 round
+    points of its equator, their tubes 0.012, 0.014 and 0.016 thick in
+    radius, each half sunk in the ball: genus 3."""
+    tubes = (0.012, 0.014, 0.016)
+
+    def f(x, y, z):
+        d = np.sqrt(x * x + y * y + z * z) - 0.5
+        for k, r in enumerate(tubes):
+            a = 2 * math.pi * k / len(tubes)
+            u = (x - 0.55 * math.cos(a)) * math.cos(a) + (y - 0.55 * math.sin(a)) * math.sin(a)
+            v = -(x - 0.55 * math.cos(a)) * math.sin(a) + (y - 0.55 * math.sin(a)) * math.cos(a)
+            d = np.minimum(d, np.hypot(np.hypot(u, z) - 0.2, v) - r)
+        return d
+    return level_set(f, (-0.85, 0.85, -0.85, 0.85, -0.6, 0.6), n)
+
+
 SHAPES = {"plate with 8 holes": lambda: plate(8), "plate with 20 holes": lambda: plate(20),
           "chain of 6 tori": tori_chain, "trefoil tube": trefoil, "double torus": double_torus}

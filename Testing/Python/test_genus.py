@@ -59,6 +59,31 @@ class HighGenusTest(unittest.TestCase):
                 selected = inside.GetOutput().GetPointData().GetArray("SelectedPoints")
                 self.assertEqual(selected.GetRange()[0], 1)
 
+    def test_handles_missed_by_the_sampling_are_sampled_again(self):
+        # At 1,000 samples the thin handles' tubes (a quarter of the samples'
+        # spacing across) are sampled too sparsely even at the finest spacing
+        # the budget allows, and the Voronoi diagram loses two of the three
+        # loops; the thin parts are then sampled again, denser, with samples
+        # beyond the budget.
+        surface = genus_shapes.ball_with_thin_handles()
+        pieces, expected = solid_euler(surface)
+        self.assertEqual((pieces, expected), (1, -2))
+        medial = medialaxis.vtkStructuralMedialAxis()
+        medial.SetInputData(surface)
+        medial.SetNumberOfSamples(1000)
+        medial.SetTargetNumberOfVertices(100)
+        medial.SetGenerateEnvelope(False)
+        self.assertEqual(errors_of(medial), "")
+        fields = medial.GetOutput().GetFieldData()
+        added = fields.GetArray("AddedSamples").GetValue(0)
+        sites = fields.GetArray("Sites").GetValue(0)
+        print("ball with thin handles: %d samples (%d added), medial axis %d" %
+              (sites, added, repair_shapes.euler_characteristic(medial.GetOutput())))
+        self.assertGreater(added, 0)
+        self.assertEqual(sites, 1000 + added)
+        self.assertEqual(fields.GetArray("MissingLoops").GetValue(0), 0)
+        self.assertEqual(repair_shapes.euler_characteristic(medial.GetOutput()), expected)
+
 
 if __name__ == "__main__":
     unittest.main()

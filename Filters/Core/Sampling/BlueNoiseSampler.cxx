@@ -262,7 +262,7 @@ double IdealSampleSpacing(double area, std::size_t n)
 SurfaceSamples SampleSurface(const TriangleMesh& surface, const SamplingOptions& options)
 {
   SurfaceSamples samples;
-  const std::size_t n = options.NumberOfSamples;
+  std::size_t n = options.NumberOfSamples;
   if (n == 0)
   {
     return samples;
@@ -276,8 +276,6 @@ SurfaceSamples SampleSurface(const TriangleMesh& surface, const SamplingOptions&
   // Elimination takes about as long as one relaxation step.
   const double share = 1.0 / (1.0 + options.RelaxationIterations);
 
-  const std::size_t m =
-    std::max(n, static_cast<std::size_t>(std::ceil(std::max(1.0, options.CandidateRatio) * n)));
   std::unique_ptr<SizingField> field;
   if (options.Adaptive)
   {
@@ -287,7 +285,11 @@ SurfaceSamples SampleSurface(const TriangleMesh& surface, const SamplingOptions&
       samples.Aborted = true;
       return samples;
     }
+    samples.AddedSamples = field->ExtraSamples();
+    n += samples.AddedSamples;
   }
+  const std::size_t m =
+    std::max(n, static_cast<std::size_t>(std::ceil(std::max(1.0, options.CandidateRatio) * n)));
   // A field without thin parts samples uniformly: exactly as without it.
   Candidates candidates = field && !field->IsUniform()
     ? AdaptiveCandidates(surface, *field, m, options.Seed)

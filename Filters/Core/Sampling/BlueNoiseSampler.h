@@ -17,7 +17,8 @@ namespace medialaxis
 {
 struct SamplingOptions
 {
-  std::size_t NumberOfSamples = 10000; // exactly this many come out
+  std::size_t NumberOfSamples = 10000; // exactly this many come out (see
+                                       // Sizing.ExtraSampleFraction)
   std::uint64_t Seed = 0;
   /// Random candidates per output sample before elimination.
   double CandidateRatio = 4.0;
@@ -39,8 +40,28 @@ struct SurfaceSamples
   std::vector<Point3> Normals;    // unit normal of that triangle
   // Adaptive only: the local thickness and the wanted spacing at each sample.
   std::vector<double> LocalThickness, Spacing;
+  /// Samples beyond NumberOfSamples, on thin parts finer than the finest
+  /// spacing ratio (Sizing.ExtraSampleFraction).
+  std::size_t AddedSamples = 0;
   bool Aborted = false;
 };
+
+/// Thin parts sampled at Sizing.SpacingPerThickness can still be too sparse
+/// for the Voronoi diagram to keep a loop round a thin handle. When the
+/// medial axis misses handles of the surface, sample again with this called
+/// for rounds 1, 2, ...: thin parts twice as dense each round, the count
+/// growing beyond the budget there by up to `round` times it. False after
+/// the last round (3).
+inline bool DenserOnThinParts(SizingOptions& sizing, int round)
+{
+  if (round < 1 || round > 3)
+  {
+    return false;
+  }
+  sizing.SpacingPerThickness *= 0.5;
+  sizing.ExtraSampleFraction = static_cast<double>(round);
+  return true;
+}
 
 /// The surface must have positive area. Deterministic for a given seed,
 /// whatever the number of threads.

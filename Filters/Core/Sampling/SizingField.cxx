@@ -83,8 +83,12 @@ SizingField::SizingField(const TriangleMesh& surface, std::size_t numberOfSample
   std::uint64_t seed, const SizingOptions& options)
 {
   const double area = SurfaceArea(surface);
-  const std::size_t probes = std::max<std::size_t>(
-    64, static_cast<std::size_t>(std::ceil(options.ProbesPerSample * numberOfSamples)));
+  // Samples beyond the budget (ExtraSampleFraction) go on thin parts, whose
+  // thickness the probes must then resolve as finely.
+  const double extraFraction = std::max(0.0, options.ExtraSampleFraction);
+  const std::size_t probes = std::max<std::size_t>(64,
+    static_cast<std::size_t>(
+      std::ceil(options.ProbesPerSample * (1.0 + extraFraction) * numberOfSamples)));
   // A stream of its own, so the probes do not repeat the candidates.
   Candidates drawn = UniformCandidates(surface, probes, seed ^ 0x5151A7E3C0FFEE11ull);
   this->ProbePoints = std::move(drawn.Points);
@@ -142,5 +146,51 @@ SizingField::SizingField(const TriangleMesh& surface, std::size_t numberOfSample
   {
     this->ProbeSpacing[i] = std::clamp(wanted[i], finest * hi, hi);
   }
+  if (extraFraction > 0.0)
+  {
+    this->FollowThinPartsBeyondBudget(
+      wanted, area, finest * hi, extraFraction * static_cast<double>(numberOfSamples));
+  }
+}
+
+void SizingField::FollowThinPartsBeyondBudget(
+  const std::vector<double>& wanted, double area, double finest, double budget)
+{
+  // Samples more than at the finest spacing, where the parts are thinner,
+  // if no spacing is below `floor`.
+  const double perProbe = (area / static_cast<double>(wanted.size())) * 2.0 / std::sqrt(3.0);
+  auto extra = [&](double floor)
+  {
+    double sum = 0.0;
+    for (double w : wanted)
+    {
+      if (w < finest)
+      {
+        const double h = std::max(w, floor);
+        sum += 1.0 / (h * h) - 1.0 / (finest * finest);
+      }
+    }
+    return sum * perProbe;
+  };
+  // The lowest floor within the budget (a part measured far thinner than
+  // the rest, e.g. a ray that ended on a nearby crease, cannot take more).
+  double lo = 1e-3 * finest, hi = finest;
+  if (extra(lo) > budget)
+  {
+    for (int it = 0; it < 100 && hi - lo > 1e-12 * hi; ++it)
+    {
+      const double mid = 0.5 * (lo + hi);
+      (extra(mid) > budget ? lo : hi) = mid;
+    }
+    lo = hi;
+  }
+  for (std::size_t i = 0; i < wanted.size(); ++i)
+  {
+    if (wanted[i] < finest)
+    {
+      this->ProbeSpacing[i] = std::max(wanted[i], lo);
+    }
+  }
+  this->Extra = static_cast<std::size_t>(std::llround(extra(lo)));
 }
 }

@@ -27,6 +27,11 @@ struct SizingOptions
   /// How fast the spacing may grow with distance (Lipschitz constant), so
   /// that the density changes gradually around a thin part.
   double Gradation = 0.5;
+  /// Where thin parts want a spacing finer than FinestSpacingRatio allows
+  /// (a handle or a tentacle much thinner than the budget can follow), they
+  /// get it with up to this fraction of the budget in samples beyond it: the
+  /// count grows. 0 (default): exactly the budget, thin parts capped.
+  double ExtraSampleFraction = 0.0;
   /// Thickness probes per sample (uniform random points on the surface).
   double ProbesPerSample = 1.0;
   ThicknessOptions Thickness;
@@ -63,12 +68,21 @@ public:
 
   const std::vector<Point3>& Probes() const { return this->ProbePoints; }
 
+  /// Samples beyond the budget that the spacing asks for (with
+  /// ExtraSampleFraction, where thin parts are finer than the finest ratio).
+  std::size_t ExtraSamples() const { return this->Extra; }
+
 private:
+  // Spacing below `finest` where wanted, for at most `budget` more samples.
+  void FollowThinPartsBeyondBudget(
+    const std::vector<double>& wanted, double area, double finest, double budget);
+
   std::vector<Point3> ProbePoints;
   std::vector<double> ProbeThickness, ProbeSpacing;
   std::unique_ptr<KdTree> Tree;
   double Coarsest = 0.0;
   double ThickEnough = 0.0;
+  std::size_t Extra = 0;
   bool Uniform = true;
 };
 }

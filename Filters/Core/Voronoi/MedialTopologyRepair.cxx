@@ -830,6 +830,7 @@ TopologyRepairCounts RepairMedialTopology(VoronoiMedialAxisResult& result,
     JoinPieces(result, edges, std::max<std::size_t>(1, expected.Components), queries, loops);
   std::vector<EdgeKey>().swap(edges); // the later steps build their own
   const long long excess = loops - expected.Genus;
+  counts.MissingLoops = static_cast<std::size_t>(std::max(0LL, -excess));
   counts.CutLoops = CutLoops(result.Mesh, excess);
   // Holes in sheets first; then loops of any shape, e.g. round a tube.
   long long left = excess - static_cast<long long>(counts.CutLoops);

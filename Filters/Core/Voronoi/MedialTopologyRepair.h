@@ -45,6 +45,10 @@ struct TopologyRepairCounts
   std::size_t JoinedPieces = 0;       // pieces joined to another by a new edge
   std::size_t CutLoops = 0;           // face-less edges removed to open a loop
   std::size_t FilledHoles = 0;        // loops capped by a fan of triangles
+  /// Handles of the surface with no loop of the complex round them: the
+  /// sampling missed a part (a thin handle) and only more samples there
+  /// bring it back.
+  std::size_t MissingLoops = 0;
 };
 
 /// Repairs `result` in place so that it has at most `expected.Components`

@@ -721,6 +721,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
     result.JoinedPieces = repaired.JoinedPieces;
     result.CutLoops = repaired.CutLoops;
     result.FilledHoles = repaired.FilledHoles;
+    result.MissingLoops = repaired.MissingLoops;
   }
   report(1.0);
   return result;

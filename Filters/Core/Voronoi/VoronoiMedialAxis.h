@@ -73,6 +73,7 @@ struct VoronoiMedialAxisResult
   std::size_t JoinedPieces = 0;         // RepairTopology: pieces joined by a new edge
   std::size_t CutLoops = 0;             // RepairTopology: face-less edges removed to open a loop
   std::size_t FilledHoles = 0;          // RepairTopology: boundary loops capped
+  std::size_t MissingLoops = 0;         // RepairTopology: handles the complex misses
   bool Aborted = false;
 };
 

@@ -498,7 +498,8 @@ int main(int argc, char** argv)
   if (FieldValue(mat, "AddedSamples") > 0)
   {
     std::cout << "  sampled again: " << FieldValue(mat, "AddedSamples")
-              << " samples added on thin parts, where the first sampling missed handles\n";
+              << " samples added (on thin parts when adaptive), where the first sampling "
+                 "missed handles\n";
   }
   if (o.AutomaticPreset)
   {

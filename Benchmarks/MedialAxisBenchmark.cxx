@@ -262,11 +262,15 @@ std::vector<Stage> RunPipeline(
         mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature, voronoiOptions);
     }));
   // As vtkStructuralMedialAxis: handles the medial axis missed are sampled
-  // again, denser on thin parts (rarely needed: never on the shared meshes).
-  for (int round = 1;
-       sampling.Adaptive && voronoi.MissingLoops > 0 && DenserOnThinParts(sampling.Sizing, round);
+  // again, denser on thin parts or, sampled uniformly, twice as many (never
+  // needed on the shared meshes).
+  for (int round = 1; voronoi.MissingLoops > 0 && DenserOnThinParts(sampling.Sizing, round);
        ++round)
   {
+    if (!sampling.Adaptive)
+    {
+      sampling.NumberOfSamples *= 2;
+    }
     stages.push_back(Measure("resampling",
       [&]
       {
@@ -278,8 +282,8 @@ std::vector<Stage> RunPipeline(
         voronoi = ComputeVoronoiMedialAxis(
           mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature, voronoiOptions);
       }));
-    std::printf("  resampled thin parts (round %d): %zu samples, %zu added, %zu handles missed\n",
-      round, sites.Points.size(), sites.AddedSamples, voronoi.MissingLoops);
+    std::printf("  sampled again (round %d): %zu samples, %zu added, %zu handles missed\n", round,
+      sites.Points.size(), sites.Points.size() - samples, voronoi.MissingLoops);
   }
   std::printf("  initial MAT: %zu vertices, %zu triangles, %zu lines, Euler characteristic %lld; "
               "%zu Delaunay cells, %zu exact inside tests\n",

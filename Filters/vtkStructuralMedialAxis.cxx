@@ -86,19 +86,25 @@ long long FieldValue(vtkPolyData* data, const char* name)
 }
 
 // When the medial axis misses handles of the surface, the sites are drawn
-// again, denser on thin parts (medialaxis::DenserOnThinParts), until none is
-// missed or the rounds run out.
+// again, denser on thin parts (medialaxis::DenserOnThinParts) or, sampled
+// uniformly, twice as many, until none is missed or the rounds run out.
 void SampleMissedHandlesAgain(vtkBlueNoiseSurfaceSampler* sampler, vtkVoronoiMedialAxis* voronoi)
 {
   medialaxis::SizingOptions sizing;
   sizing.SpacingPerThickness = sampler->GetThinPartSpacing();
-  for (int round = 1;
-       sampler->GetAdaptive() && FieldValue(voronoi->GetOutput(), "MissingLoops") > 0 &&
+  for (int round = 1; FieldValue(voronoi->GetOutput(), "MissingLoops") > 0 &&
        medialaxis::DenserOnThinParts(sizing, round);
        ++round)
   {
-    sampler->SetThinPartSpacing(sizing.SpacingPerThickness);
-    sampler->SetThinPartExtraSamples(sizing.ExtraSampleFraction);
+    if (sampler->GetAdaptive())
+    {
+      sampler->SetThinPartSpacing(sizing.SpacingPerThickness);
+      sampler->SetThinPartExtraSamples(sizing.ExtraSampleFraction);
+    }
+    else
+    {
+      sampler->SetNumberOfSamples(2 * sampler->GetNumberOfSamples());
+    }
     voronoi->Update();
   }
 }
@@ -507,7 +513,7 @@ int vtkStructuralMedialAxis::RequestData(
   fields->AddArray(totalArray);
   vtkPolyData* initial = voronoi->GetOutput();
   medialaxis::AddFieldValue(mat, "Sites", sampler->GetOutput()->GetNumberOfPoints());
-  const long long addedSamples = FieldValue(sampler->GetOutput(), "AddedSamples");
+  const long long addedSamples = sampler->GetOutput()->GetNumberOfPoints() - this->NumberOfSamples;
   const long long missingLoops = FieldValue(initial, "MissingLoops");
   medialaxis::AddFieldValue(mat, "AddedSamples", addedSamples);
   medialaxis::AddFieldValue(mat, "MissingLoops", missingLoops);
@@ -515,8 +521,7 @@ int vtkStructuralMedialAxis::RequestData(
   {
     vtkWarningMacro(<< "the medial axis misses " << missingLoops
                     << " handle(s) of the surface: parts thinner than the sampling can follow; "
-                       "use more samples"
-                    << (this->AdaptiveSampling ? "" : " or AdaptiveSampling"));
+                       "use more samples");
   }
   medialaxis::AddFieldValue(mat, "InitialVertices", initial->GetNumberOfPoints());
   medialaxis::AddFieldValue(mat, "InitialTriangles", initial->GetNumberOfPolys());

@@ -34,6 +34,15 @@
  * the wrap to the input over the diagonal); `InputTriangleId` is then the
  * nearest input cell.
  *
+ * The medial axis of a solid has one loop per handle. Where the initial
+ * medial mesh has fewer (a handle thinner than the sampling could follow),
+ * the sites are drawn again: with AdaptiveSampling, thin parts twice as
+ * dense each round with samples beyond NumberOfSamples there
+ * (vtkBlueNoiseSurfaceSampler's ThinPartExtraSamples); without it, twice as
+ * many samples; three rounds at most. Port 0's field data `AddedSamples`
+ * gives the samples beyond NumberOfSamples and `MissingLoops` the handles
+ * still missed, which a warning names.
+ *
  * Progress moves through the stages in proportion to their usual cost; an
  * abort stops the running stage and leaves the outputs empty. Errors of a
  * stage (e.g. an open or non-manifold surface) are reported with the stage's

@@ -182,6 +182,25 @@ def repair_warning(report):
     return "surface repaired: %s pairs of crossing triangles resolved" % pairs
 
 
+def sampling_warning(report):
+    """Samples added where the first sampling missed handles, and handles
+    still missed, as a warning, or ""."""
+    counts = report.get("counts", {})
+    notes = []
+    if counts.get("added_samples", 0) > 0:
+        notes.append("sampled again: %s samples added where the first sampling missed handles"
+                     % counts["added_samples"])
+    if counts.get("missing_handles", 0) > 0:
+        notes.append("the medial axis misses %s handle(s) of the surface"
+                     % counts["missing_handles"])
+    return "; ".join(notes)
+
+
+def report_warning(report):
+    """Everything in the mesh's report that the summary should warn of."""
+    return "; ".join(w for w in (repair_warning(report), sampling_warning(report)) if w)
+
+
 def summary_row(plan, record, resumed):
     """One row of the summary: the batch's record and the mesh's own report."""
     report = read_json(os.path.join(plan["output_dir"], record["mesh"], "report.json")) or {}
@@ -209,7 +228,7 @@ def summary_row(plan, record, resumed):
             "sheets": clean.get("sheets", ""), "n80": clean.get("n80", ""),
             "fin_area_percent": clean.get("fin_area_percent", ""),
             "folds_percent": clean.get("folds_percent", ""),
-            "warning": repair_warning(report),
+            "warning": report_warning(report),
             "rank": record["rank"], "resumed": resumed, "reason": record["reason"],
             "input": record["input"]}
 

@@ -83,6 +83,18 @@ class HighGenusTest(unittest.TestCase):
         self.assertEqual(sites, 1000 + added)
         self.assertEqual(fields.GetArray("MissingLoops").GetValue(0), 0)
         self.assertEqual(repair_shapes.euler_characteristic(medial.GetOutput()), expected)
+        # Sampled uniformly, the count doubles each round: 2,000 miss two
+        # handles, so do 4,000; 8,000 keep all three.
+        medial.SetAdaptiveSampling(False)
+        medial.SetNumberOfSamples(2000)
+        medial.SetTargetNumberOfVertices(800)
+        self.assertEqual(errors_of(medial), "")
+        fields = medial.GetOutput().GetFieldData()
+        print("uniformly: %d samples, medial axis %d" % (fields.GetArray("Sites").GetValue(0),
+              repair_shapes.euler_characteristic(medial.GetOutput())))
+        self.assertEqual(fields.GetArray("Sites").GetValue(0), 8000)
+        self.assertEqual(fields.GetArray("AddedSamples").GetValue(0), 6000)
+        self.assertEqual(repair_shapes.euler_characteristic(medial.GetOutput()), expected)
 
 
 if __name__ == "__main__":

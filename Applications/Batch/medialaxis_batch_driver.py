@@ -376,4 +376,5 @@ def main(plan_path):
     comm.Barrier()
 
 
-main(sys.argv[1])
+if __name__ == "__main__":  # pvbatch runs it so; a test imports its helpers
+    main(sys.argv[1])

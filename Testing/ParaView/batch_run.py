@@ -233,6 +233,20 @@ try:
           any(w.startswith("overlap: surface repaired") for w in s["warnings"]),
           "repair warning: %s, %s" % (rows["overlap"], s["warnings"]))
 
+    # The summary also warns of samples added where the first sampling
+    # missed handles, and of handles still missed.
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                    "Applications", "Batch"))
+    import medialaxis_batch_driver as driver
+    check(driver.report_warning({"counts": {"added_samples": 0, "missing_handles": 0}}) == "",
+          "no warning without resampling")
+    warning = driver.report_warning({
+        "repair": {"repaired": True, "crossing_pairs": 3, "method": "resolved crossings"},
+        "counts": {"added_samples": 1000, "missing_handles": 1}})
+    check(warning == "surface repaired: 3 pairs of crossing triangles resolved; sampled again: "
+          "1000 samples added where the first sampling missed handles; the medial axis misses "
+          "1 handle(s) of the surface", "sampling warning: %s" % warning)
+
     # 5. Bad arguments stop before any mesh runs.
     run("--samples", "many", meshes, os.path.join(work, "bad"), expect=2)
     print("batch: all checks passed")

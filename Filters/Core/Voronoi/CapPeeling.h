@@ -25,6 +25,13 @@ inline EdgeKey Key(Index a, Index b)
   return a < b ? EdgeKey{ a, b } : EdgeKey{ b, a };
 }
 
+/// The index of edge (a, b) in the sorted `edges`, which must hold it.
+inline std::size_t EdgeId(const std::vector<EdgeKey>& edges, Index a, Index b)
+{
+  return static_cast<std::size_t>(
+    std::lower_bound(edges.begin(), edges.end(), Key(a, b)) - edges.begin());
+}
+
 // Which edges each triangle has and which triangles each edge is on, for
 // the peeling walks of the topology repair.
 struct FaceIncidence

@@ -62,12 +62,6 @@ bool UpdateStage(vtkAlgorithm* stage, const char* what, ProgressBar* bar, double
   return true;
 }
 
-double FieldValue(vtkPolyData* data, const char* name)
-{
-  vtkDataArray* a = data->GetFieldData()->GetArray(name);
-  return a && a->GetNumberOfTuples() > 0 ? a->GetComponent(0, 0) : 0.0;
-}
-
 std::string JsonString(const std::string& s)
 {
   std::string out = "\"";

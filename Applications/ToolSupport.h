@@ -5,6 +5,7 @@
 #define MedialAxis_ToolSupport_h
 
 #include "vtkErrorEventText.h"
+#include "vtkMedialMeshConversion.h"
 
 #include "vtkAlgorithm.h"
 
@@ -66,7 +67,10 @@ bool WriteVtp(vtkPolyData* data, const std::string& path);
 bool UpdateStage(vtkAlgorithm* stage, const char* what, ProgressBar* bar, double& seconds);
 
 /// The first value of a field-data array, 0 when it is missing.
-double FieldValue(vtkPolyData* data, const char* name);
+inline double FieldValue(vtkPolyData* data, const char* name)
+{
+  return medialaxis::GetFieldValue(data, name);
+}
 
 /// A JSON string literal.
 std::string JsonString(const std::string& s);

@@ -80,6 +80,12 @@ void AddFieldDouble(vtkPolyData* output, const char* name, double value)
   output->GetFieldData()->AddArray(a);
 }
 
+double GetFieldValue(vtkPolyData* data, const char* name)
+{
+  vtkDataArray* a = data->GetFieldData()->GetArray(name);
+  return a && a->GetNumberOfTuples() > 0 ? a->GetComponent(0, 0) : 0.0;
+}
+
 void AddFieldArray(vtkPolyData* output, const char* name, const std::vector<double>& values)
 {
   vtkNew<vtkDoubleArray> a;

@@ -56,6 +56,9 @@ void AddFieldValue(vtkPolyData* output, const char* name, long long value);
 /// Adds a one-value double field-data array (a measured quantity).
 void AddFieldDouble(vtkPolyData* output, const char* name, double value);
 
+/// The first value of a field-data array (as the two above add), 0 if absent.
+double GetFieldValue(vtkPolyData* data, const char* name);
+
 /// Adds a double field-data array of the given values (one per sheet, wall...).
 void AddFieldArray(vtkPolyData* output, const char* name, const std::vector<double>& values);
 

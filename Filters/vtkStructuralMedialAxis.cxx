@@ -75,15 +75,10 @@ namespace
 {
 using medialaxis::ErrorTargetResult;
 using medialaxis::FringeChoice;
+using medialaxis::GetFieldValue;
 using medialaxis::SimplifyToErrorTarget;
 using medialaxis::SimplifyWithTheCloserFringeSetting;
 using medialaxis::StageObserver;
-
-long long FieldValue(vtkPolyData* data, const char* name)
-{
-  vtkDataArray* array = data->GetFieldData()->GetArray(name);
-  return array && array->GetNumberOfTuples() > 0 ? static_cast<long long>(array->GetTuple1(0)) : 0;
-}
 
 // When the medial axis misses handles of the surface, the sites are drawn
 // again, denser on thin parts (medialaxis::DenserOnThinParts) or, sampled
@@ -92,7 +87,7 @@ void SampleMissedHandlesAgain(vtkBlueNoiseSurfaceSampler* sampler, vtkVoronoiMed
 {
   medialaxis::SizingOptions sizing;
   sizing.SpacingPerThickness = sampler->GetThinPartSpacing();
-  for (int round = 1; FieldValue(voronoi->GetOutput(), "MissingLoops") > 0 &&
+  for (int round = 1; GetFieldValue(voronoi->GetOutput(), "MissingLoops") > 0 &&
        medialaxis::DenserOnThinParts(sizing, round);
        ++round)
   {
@@ -514,7 +509,7 @@ int vtkStructuralMedialAxis::RequestData(
   vtkPolyData* initial = voronoi->GetOutput();
   medialaxis::AddFieldValue(mat, "Sites", sampler->GetOutput()->GetNumberOfPoints());
   const long long addedSamples = sampler->GetOutput()->GetNumberOfPoints() - this->NumberOfSamples;
-  const long long missingLoops = FieldValue(initial, "MissingLoops");
+  const auto missingLoops = static_cast<long long>(GetFieldValue(initial, "MissingLoops"));
   medialaxis::AddFieldValue(mat, "AddedSamples", addedSamples);
   medialaxis::AddFieldValue(mat, "MissingLoops", missingLoops);
   if (missingLoops > 0)

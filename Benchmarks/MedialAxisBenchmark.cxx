@@ -251,16 +251,16 @@ std::vector<Stage> RunPipeline(
   RestrictedVoronoiDiagram rvd;
   stages.push_back(Measure("rvd", [&] { rvd = ComputeRestrictedVoronoi(mesh, sites.Points); }));
   VoronoiMedialAxisResult voronoi;
-  stages.push_back(Measure("voronoi",
-    [&]
-    {
-      VoronoiMedialAxisOptions voronoiOptions;
-      voronoiOptions.CoveringRadius = rvd.CellRadius.empty()
-        ? 0.0
-        : *std::max_element(rvd.CellRadius.begin(), rvd.CellRadius.end());
-      voronoi = ComputeVoronoiMedialAxis(
-        mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature, voronoiOptions);
-    }));
+  auto computeVoronoi = [&]
+  {
+    VoronoiMedialAxisOptions voronoiOptions;
+    voronoiOptions.CoveringRadius = rvd.CellRadius.empty()
+      ? 0.0
+      : *std::max_element(rvd.CellRadius.begin(), rvd.CellRadius.end());
+    voronoi = ComputeVoronoiMedialAxis(
+      mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature, voronoiOptions);
+  };
+  stages.push_back(Measure("voronoi", computeVoronoi));
   // As vtkStructuralMedialAxis: handles the medial axis missed are sampled
   // again, denser on thin parts or, sampled uniformly, twice as many (never
   // needed on the shared meshes).
@@ -276,11 +276,7 @@ std::vector<Stage> RunPipeline(
       {
         sites = SampleSurface(mesh, sampling);
         rvd = ComputeRestrictedVoronoi(mesh, sites.Points);
-        VoronoiMedialAxisOptions voronoiOptions;
-        voronoiOptions.CoveringRadius =
-          *std::max_element(rvd.CellRadius.begin(), rvd.CellRadius.end());
-        voronoi = ComputeVoronoiMedialAxis(
-          mesh, sites.Points, sites.TriangleIds, rvd.ConcaveFeature, voronoiOptions);
+        computeVoronoi();
       }));
     std::printf("  sampled again (round %d): %zu samples, %zu added, %zu handles missed\n", round,
       sites.Points.size(), sites.Points.size() - samples, voronoi.MissingLoops);

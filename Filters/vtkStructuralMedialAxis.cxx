@@ -3,7 +3,6 @@
 #include "Sampling/BlueNoiseSampler.h"
 #include "Simplification/AtlasSimplifier.h"
 
-#include "vtkErrorEventText.h"
 #include "vtkMedialMeshConversion.h"
 #include "vtkStructuralMedialAxisSearches.h"
 #include "vtkSurfacePreparation.h"
@@ -21,7 +20,6 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkMedialReconstructionError.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"

@@ -7,6 +7,7 @@
 
 #include "Simplification/AtlasPolicy.h"
 #include "Simplification/EdgeCollapse.h"
+#include "Support/HeapRelease.h"
 
 #include <algorithm>
 #include <chrono>
@@ -116,6 +117,7 @@ AtlasSimplifierResult Simplify(const AtlasMedialMesh& initial, AtlasMedialMesh* 
   if (owned)
   {
     *owned = AtlasMedialMesh();
+    ReleaseFreeHeapPages();
   }
   const double setupSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   const EdgeCollapseCounts counts = mesh.Run();
@@ -205,6 +207,7 @@ AtlasSimplifierResult SimplifyMedialAxis(AtlasMedialMesh&& input,
   // Setup (per-cell quadrics, Atlases, connectivity) plus the snapping and
   // evaluation of every edge is the queue initialisation.
   const Clock::time_point start = Clock::now();
+  ReleaseFreeHeapPages();
   // Hair first: the collapses then start from the sheets that stand for the
   // solid's thickness. Not below StrictLinkConditionVertexCount, where the
   // medial axis of a tube must shrink to a curve under the strict link

@@ -5,6 +5,7 @@
 #include "Geometry/Vec3.h"
 #include "Mesh/TriangleAdjacency.h"
 #include "Support/DisjointSets.h"
+#include "Support/HeapRelease.h"
 #include "Surface/FeatureNormals.h"
 
 #include <tbb/blocked_range.h>
@@ -474,6 +475,7 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
     }
   }
   report(1.0);
+  ReleaseFreeHeapPages();
   return rvd;
 }
 }

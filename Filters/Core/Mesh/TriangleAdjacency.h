@@ -42,16 +42,10 @@ struct TriangleAdjacency
   std::vector<std::array<EdgeFeature, 3>> Feature;
 };
 
-/// `featureAngle` in radians: the tolerance phi of the dihedral-angle test.
-/// With `filteredNormals` (one per triangle, e.g. BilateralFaceNormals), a
-/// convex edge is sharp only when both the triangles' own normals and their
-/// filtered normals differ by more than phi: noise does not pass for ridges
-/// (which the simplifier snaps medial vertices onto), and the creases the
-/// filter may sharpen on smooth regions are not added. Concave edges keep
-/// the raw test: they only mark spurious medial faces for removal, which
-/// the dents of a noisy surface do cause.
-TriangleAdjacency ComputeTriangleAdjacency(const TriangleMesh& mesh, double featureAngle,
-  const std::vector<Point3>* filteredNormals = nullptr);
+/// `featureAngle` in radians: the tolerance phi of the dihedral-angle test
+/// on the triangles' own normals (Surface/FeatureNormals.h: FeatureAdjacency
+/// confirms convex edges on filtered normals).
+TriangleAdjacency ComputeTriangleAdjacency(const TriangleMesh& mesh, double featureAngle);
 
 /// Unit normal of triangle t (zero for a degenerate triangle).
 Point3 TriangleNormal(const TriangleMesh& mesh, Index t);

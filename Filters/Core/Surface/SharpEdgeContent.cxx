@@ -25,15 +25,11 @@ SharpEdgeContent MeasureSharpEdgeContent(
   SharpEdgeContent content;
   content.Area = SurfaceArea(mesh);
   content.CreaseFraction = creaseFraction;
-  std::vector<Point3> filtered;
-  if (normalFiltering > 0)
-  {
-    filtered = BilateralFaceNormals(mesh, normalFiltering);
-  }
   // Convex edges are confirmed by the filtered normals there already; the
   // test below confirms concave ones the same way.
+  std::vector<Point3> filtered;
   const TriangleAdjacency adjacency =
-    ComputeTriangleAdjacency(mesh, featureAngle, filtered.empty() ? nullptr : &filtered);
+    FeatureAdjacency(mesh, featureAngle, normalFiltering, &filtered);
   const double cosine = std::cos(featureAngle);
   struct SharpEdge
   {

@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace medialaxis
@@ -35,8 +36,9 @@ struct LabelledVertex
 };
 using Polygon = std::vector<LabelledVertex>;
 
-// Keeps the part of `poly` closer to site i than to site j (Sutherland-Hodgman).
-void ClipByBisector(const Point3& si, const Point3& sj, Index j, Polygon& poly, Polygon& scratch)
+// Keeps the part of `poly` closer to site i than to site j (Sutherland-Hodgman);
+// false when all of it is.
+bool ClipByBisector(const Point3& si, const Point3& sj, Index j, Polygon& poly, Polygon& scratch)
 {
   const Point3 normal = sj - si;
   const Point3 middle = 0.5 * (si + sj);
@@ -57,12 +59,12 @@ void ClipByBisector(const Point3& si, const Point3& sj, Index j, Polygon& poly, 
   }
   if (!anyOut)
   {
-    return;
+    return false;
   }
   if (!anyIn)
   {
     poly.clear();
-    return;
+    return true;
   }
   scratch.clear();
   for (std::size_t k = 0; k < n; ++k)
@@ -82,6 +84,7 @@ void ClipByBisector(const Point3& si, const Point3& sj, Index j, Polygon& poly, 
     }
   }
   poly.swap(scratch);
+  return true;
 }
 
 double PolygonArea2(const Polygon& poly, Point3* weightedCentroid)
@@ -111,6 +114,7 @@ struct BlockOutput
   std::vector<std::uint8_t> EdgeMask; // bit k: touches triangle edge k along a segment
   std::vector<double> TwiceArea;
   std::vector<Point3> WeightedCentroid; // sum of (twice-area x centroid)
+  std::vector<double> Reach;            // farthest vertex from the site
 
   void Clear()
   {
@@ -121,6 +125,7 @@ struct BlockOutput
     this->EdgeMask.clear();
     this->TwiceArea.clear();
     this->WeightedCentroid.clear();
+    this->Reach.clear();
   }
 };
 
@@ -178,6 +183,7 @@ public:
     std::size_t count = this->NeighbourCount;
     std::size_t position = 0;
     bool extended = false;
+    double radius2 = -1.0; // of the polygon as it is; < 0: to be measured
     while (!state.Poly.empty())
     {
       if (position == count)
@@ -201,10 +207,13 @@ public:
       {
         continue;
       }
-      double radius2 = 0.0;
-      for (const auto& v : state.Poly)
+      if (radius2 < 0.0)
       {
-        radius2 = std::max(radius2, Distance2(v.P, si));
+        radius2 = 0.0;
+        for (const auto& v : state.Poly)
+        {
+          radius2 = std::max(radius2, Distance2(v.P, si));
+        }
       }
       if (dj2 > 4.0 * radius2)
       {
@@ -219,7 +228,10 @@ public:
         }
         continue;
       }
-      ClipByBisector(si, this->Sites[j], j, state.Poly, state.Scratch);
+      if (ClipByBisector(si, this->Sites[j], j, state.Poly, state.Scratch))
+      {
+        radius2 = -1.0;
+      }
     }
   }
 
@@ -266,10 +278,15 @@ public:
       {
         continue; // a sliver from round-off at a cell corner
       }
+      double reach2 = 0.0;
       for (const auto& v : state.Poly)
       {
         out.Vertices.push_back(v.P);
+        reach2 = std::max(reach2, Distance2(v.P, this->Sites[i]));
       }
+      // The root of the largest square is the largest root (a correctly
+      // rounded root is monotone): the same value as the largest distance.
+      out.Reach.push_back(std::sqrt(reach2));
       out.Sizes.push_back(static_cast<Index>(n));
       out.Sites.push_back(i);
       out.Triangles.push_back(t);
@@ -338,10 +355,7 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
       edgeMask.push_back(o.EdgeMask[p]);
       rvd.CellArea[o.Sites[p]] += 0.5 * o.TwiceArea[p];
       double& reach = rvd.CellRadius[o.Sites[p]];
-      for (Index k = rvd.Offsets[rvd.Offsets.size() - 2]; k < rvd.Offsets.back(); ++k)
-      {
-        reach = std::max(reach, Norm(rvd.Vertices[k] - sites[o.Sites[p]]));
-      }
+      reach = std::max(reach, o.Reach[p]);
       weighted[o.Sites[p]] = weighted[o.Sites[p]] + o.WeightedCentroid[p];
     }
     o = BlockOutput();
@@ -418,13 +432,8 @@ RestrictedVoronoiDiagram ComputeRestrictedVoronoi(const TriangleMesh& surface,
   }
 
   // Feature flags and connected pieces of every cell.
-  std::vector<Point3> filteredNormals;
-  if (options.FeatureNormalFiltering > 0)
-  {
-    filteredNormals = BilateralFaceNormals(surface, options.FeatureNormalFiltering);
-  }
-  const TriangleAdjacency adjacency = ComputeTriangleAdjacency(
-    surface, options.FeatureAngle, filteredNormals.empty() ? nullptr : &filteredNormals);
+  const TriangleAdjacency adjacency =
+    FeatureAdjacency(surface, options.FeatureAngle, options.FeatureNormalFiltering);
   std::vector<Index> firstPolygon(nt + 1, 0);
   for (Index t : rvd.PolygonTriangle)
   {

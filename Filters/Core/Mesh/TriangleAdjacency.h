@@ -18,9 +18,13 @@ struct HalfEdge
   Index Lo, Hi; // sorted vertex ids
   Index Tri;
   bool Forward; // the triangle traverses Lo -> Hi
+  // Forward last: a triangle with a repeated vertex uses one edge twice, and
+  // the order of its two uses must not depend on the sorting algorithm.
   bool operator<(const HalfEdge& o) const
   {
-    return Lo != o.Lo ? Lo < o.Lo : (Hi != o.Hi ? Hi < o.Hi : Tri < o.Tri);
+    return Lo != o.Lo
+      ? Lo < o.Lo
+      : (Hi != o.Hi ? Hi < o.Hi : (Tri != o.Tri ? Tri < o.Tri : Forward < o.Forward));
   }
 };
 

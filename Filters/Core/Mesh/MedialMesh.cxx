@@ -161,6 +161,25 @@ void SortEdgeKeys(std::vector<std::array<Index, 2>>& keys)
   }
 }
 
+namespace
+{
+// Calls use(a, b) for each listed edge and for each edge of each face.
+template <typename Use>
+void ForEachEdgeUse(const MedialMesh& mesh, Use&& use)
+{
+  for (const auto& e : mesh.Edges)
+  {
+    use(e[0], e[1]);
+  }
+  for (const auto& f : mesh.Faces)
+  {
+    use(f[0], f[1]);
+    use(f[1], f[2]);
+    use(f[2], f[0]);
+  }
+}
+}
+
 std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh)
 {
   // Each edge's larger vertex in the row of its smaller one (interior edges
@@ -170,39 +189,21 @@ std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh)
   const std::size_t n = mesh.NumberOfVertices();
   std::vector<std::size_t> start(n + 1, 0);
   bool valid = true;
-  auto count = [&](Index a, Index b)
-  {
-    if (a < 0 || b < 0 || static_cast<std::size_t>(std::max(a, b)) >= n)
+  ForEachEdgeUse(mesh,
+    [&](Index a, Index b)
     {
-      valid = false;
-      return;
-    }
-    ++start[static_cast<std::size_t>(std::min(a, b)) + 1];
-  };
-  for (const auto& e : mesh.Edges)
-  {
-    count(e[0], e[1]);
-  }
-  for (const auto& f : mesh.Faces)
-  {
-    count(f[0], f[1]);
-    count(f[1], f[2]);
-    count(f[2], f[0]);
-  }
+      if (a < 0 || b < 0 || static_cast<std::size_t>(std::max(a, b)) >= n)
+      {
+        valid = false;
+        return;
+      }
+      ++start[static_cast<std::size_t>(std::min(a, b)) + 1];
+    });
   std::vector<std::array<Index, 2>> edges;
   if (!valid)
   {
     // Ids outside the vertices: sort the pairs as they are.
-    for (const auto& e : mesh.Edges)
-    {
-      edges.push_back(SortedEdge(e[0], e[1]));
-    }
-    for (const auto& f : mesh.Faces)
-    {
-      edges.push_back(SortedEdge(f[0], f[1]));
-      edges.push_back(SortedEdge(f[1], f[2]));
-      edges.push_back(SortedEdge(f[2], f[0]));
-    }
+    ForEachEdgeUse(mesh, [&](Index a, Index b) { edges.push_back(SortedEdge(a, b)); });
     SortEdgeKeys(edges);
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     return edges;
@@ -214,18 +215,9 @@ std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh)
   std::vector<Index> larger(start[n]);
   {
     std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
-    auto fill = [&](Index a, Index b)
-    { larger[cursor[static_cast<std::size_t>(std::min(a, b))]++] = std::max(a, b); };
-    for (const auto& e : mesh.Edges)
-    {
-      fill(e[0], e[1]);
-    }
-    for (const auto& f : mesh.Faces)
-    {
-      fill(f[0], f[1]);
-      fill(f[1], f[2]);
-      fill(f[2], f[0]);
-    }
+    ForEachEdgeUse(mesh,
+      [&](Index a, Index b)
+      { larger[cursor[static_cast<std::size_t>(std::min(a, b))]++] = std::max(a, b); });
   }
   std::size_t unique = 0;
   for (std::size_t a = 0; a < n; ++a)

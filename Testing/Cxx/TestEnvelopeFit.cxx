@@ -10,6 +10,7 @@
 #include "Mesh/MedialMeshQuality.h"
 #include "Support/Parallel.h"
 #include "Surface/AnalyticShapes.h"
+#include "Surface/FilletedShapes.h"
 
 #include <gtest/gtest.h>
 

@@ -5,6 +5,7 @@
 #include "Fillets/FilletDetector.h"
 #include "Geometry/Vec3.h"
 #include "Surface/AnalyticShapes.h"
+#include "Surface/FilletedShapes.h"
 #include "Surface/SurfacePreparation.h"
 
 #include "TestHelpers.h"

@@ -2,11 +2,11 @@
 #include "Surface/SurfacePreparation.h"
 
 #include "Geometry/Vec3.h"
-#include "Mesh/TriangleAdjacency.h"
-#include "Support/DisjointSets.h"
 #include "Surface/CoincidentPoints.h"
+#include "Surface/DegenerateTriangles.h"
 #include "Surface/SelfIntersection.h"
 #include "Surface/SelfIntersectionRepair.h"
+#include "Surface/ShellOrientation.h"
 #include "Surface/SurfaceWrap.h"
 
 #include <algorithm>
@@ -24,138 +24,6 @@ constexpr double Pi = 3.14159265358979323846;
 std::string Count(std::size_t n, const char* singular, const char* plural)
 {
   return std::to_string(n) + ' ' + (n == 1 ? singular : plural);
-}
-
-// A zero-area "needle": three distinct but (nearly) collinear vertices.
-bool IsNeedle(const std::vector<Point3>& points, const Triangle& tri)
-{
-  const Point3 e0 = (points[tri[1]] - points[tri[0]]);
-  const Point3 e1 = (points[tri[2]] - points[tri[0]]);
-  const Point3 e2 = (points[tri[2]] - points[tri[1]]);
-  const double longest = std::max({ Dot(e0, e0), Dot(e1, e1), Dot(e2, e2) });
-  return Norm(Cross(e0, e1)) <= 1e-12 * longest;
-}
-
-// Replaces needles (common in CAD exports) by splitting the neighbour across
-// their longest edge at the middle vertex, which keeps the surface closed.
-// Returns the number of needles removed; unresolvable needles are kept.
-std::size_t AbsorbNeedles(
-  const std::vector<Point3>& points, std::vector<Triangle>& triangles, std::size_t& splitNeighbours)
-{
-  std::vector<std::size_t> needles;
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    if (IsNeedle(points, triangles[t]))
-    {
-      needles.push_back(t);
-    }
-  }
-  if (needles.empty())
-  {
-    return 0;
-  }
-  const auto halfEdges = SortedHalfEdges(triangles);
-  std::vector<char> alive(triangles.size(), 1), touched(triangles.size(), 0);
-  std::vector<Triangle> added;
-  std::size_t removed = 0;
-  for (std::size_t t : needles)
-  {
-    if (touched[t])
-    {
-      continue;
-    }
-    const Triangle tri = triangles[t];
-    // Middle vertex c is opposite the longest edge (a, b).
-    int longestK = 0;
-    double longestLength = -1.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      const Point3 e = (points[tri[(k + 1) % 3]] - points[tri[k]]);
-      if (Dot(e, e) > longestLength)
-      {
-        longestLength = Dot(e, e);
-        longestK = k;
-      }
-    }
-    const Index a = tri[longestK], b = tri[(longestK + 1) % 3], c = tri[(longestK + 2) % 3];
-    const HalfEdge probe{ std::min(a, b), std::max(a, b), -1, false };
-    auto first = std::lower_bound(halfEdges.begin(), halfEdges.end(), probe);
-    std::vector<Index> others;
-    for (auto it = first; it != halfEdges.end() && it->Lo == probe.Lo && it->Hi == probe.Hi; ++it)
-    {
-      if (it->Tri != static_cast<Index>(t))
-      {
-        others.push_back(it->Tri);
-      }
-    }
-    if (others.size() != 1 || touched[others[0]])
-    {
-      continue;
-    }
-    const Index n = others[0];
-    const Triangle nb = triangles[n];
-    int pa = 0;
-    while (pa < 3 && !(nb[pa] == a || nb[pa] == b))
-    {
-      ++pa;
-    }
-    // Neighbour in cyclic order (p, q, x) with {p, q} == {a, b}.
-    Index p = nb[pa], q = nb[(pa + 1) % 3], x = nb[(pa + 2) % 3];
-    if (!((q == a || q == b) && q != p))
-    {
-      p = nb[(pa + 2) % 3];
-      q = nb[pa];
-      x = nb[(pa + 1) % 3];
-    }
-    if (x == c)
-    {
-      continue; // the neighbour is the needle's mirror image; dedup handles it
-    }
-    alive[t] = 0;
-    alive[n] = 0;
-    touched[t] = touched[n] = 1;
-    added.push_back({ p, c, x });
-    added.push_back({ c, q, x });
-    ++removed;
-    ++splitNeighbours;
-  }
-  std::vector<Triangle> kept;
-  kept.reserve(triangles.size() + added.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    if (alive[t])
-    {
-      kept.push_back(triangles[t]);
-    }
-  }
-  kept.insert(kept.end(), added.begin(), added.end());
-  triangles.swap(kept);
-  return removed;
-}
-
-// Absorbs needles until none is left or no progress is made (splitting a
-// neighbour that is itself nearly flat makes new needles), then drops the
-// rest: no later stage may see a zero-area triangle (CGAL's intersection
-// tests require non-degenerate ones). Dropping can open the surface, which
-// the closedness check then reports.
-std::size_t RemoveNeedles(
-  const std::vector<Point3>& points, std::vector<Triangle>& triangles, std::size_t& splitNeighbours)
-{
-  std::size_t removed = 0;
-  for (int round = 0; round < 8; ++round)
-  {
-    const std::size_t absorbed = AbsorbNeedles(points, triangles, splitNeighbours);
-    removed += absorbed;
-    if (absorbed == 0)
-    {
-      break;
-    }
-  }
-  const std::size_t before = triangles.size();
-  triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
-                    [&points](const Triangle& t) { return IsNeedle(points, t); }),
-    triangles.end());
-  return removed + (before - triangles.size());
 }
 
 // Generalised winding number of point p with respect to a set of triangles
@@ -485,35 +353,7 @@ SurfacePreparationReport PrepareSurface(
   report.DegenerateTriangles += RemoveNeedles(input.Points, triangles, report.SplitNeighbours);
 
   // 4. Drop triangles whose vertex set repeats an earlier one.
-  {
-    std::vector<std::pair<Triangle, Index>> keys(triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-    {
-      Triangle k = triangles[t];
-      std::sort(k.begin(), k.end());
-      keys[t] = { k, static_cast<Index>(t) };
-    }
-    std::sort(keys.begin(), keys.end());
-    std::vector<char> keep(triangles.size(), 1);
-    for (std::size_t i = 1; i < keys.size(); ++i)
-    {
-      if (keys[i].first == keys[i - 1].first)
-      {
-        keep[keys[i].second] = 0;
-        ++report.DuplicateTriangles;
-      }
-    }
-    std::vector<Triangle> unique;
-    unique.reserve(triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-    {
-      if (keep[t])
-      {
-        unique.push_back(triangles[t]);
-      }
-    }
-    triangles.swap(unique);
-  }
+  report.DuplicateTriangles = RemoveDuplicateTriangles(triangles);
   if (triangles.empty())
   {
     report.Error = "surface has no valid triangles: all " + std::to_string(report.InputTriangles) +
@@ -522,38 +362,10 @@ SurfacePreparationReport PrepareSurface(
   }
 
   // 5. Edge incidence: boundary and non-manifold edges.
-  auto halfEdges = SortedHalfEdges(triangles);
-  struct Adjacency
-  {
-    Index A, B;      // the two triangles
-    Index U, V;      // the edge's vertices
-    bool Consistent; // traversed in opposite directions
-  };
-  std::vector<Adjacency> adjacencies;
-  adjacencies.reserve(halfEdges.size() / 2);
-  for (std::size_t i = 0; i < halfEdges.size();)
-  {
-    std::size_t j = i + 1;
-    while (j < halfEdges.size() && halfEdges[j].Lo == halfEdges[i].Lo &&
-      halfEdges[j].Hi == halfEdges[i].Hi)
-    {
-      ++j;
-    }
-    if (j - i == 1)
-    {
-      ++report.BoundaryEdges;
-    }
-    else if (j - i > 2)
-    {
-      ++report.NonManifoldEdges;
-    }
-    else
-    {
-      adjacencies.push_back({ halfEdges[i].Tri, halfEdges[i + 1].Tri, halfEdges[i].Lo,
-        halfEdges[i].Hi, halfEdges[i].Forward != halfEdges[i + 1].Forward });
-    }
-    i = j;
-  }
+  const std::size_t nt = triangles.size();
+  EdgePairing edges = PairTriangleEdges(triangles);
+  report.BoundaryEdges = edges.BoundaryEdges;
+  report.NonManifoldEdges = edges.NonManifoldEdges;
   if (report.BoundaryEdges || report.NonManifoldEdges)
   {
     if (report.BoundaryEdges)
@@ -571,120 +383,26 @@ SurfacePreparationReport PrepareSurface(
   }
 
   // 6. Non-manifold vertices: the corners around a vertex must form one fan.
+  report.NonManifoldVertices =
+    CountNonManifoldVertices(triangles, edges.Adjacencies, input.Points.size());
+  if (report.NonManifoldVertices)
   {
-    DisjointSets corners(3 * triangles.size());
-    auto cornerOf = [&triangles](Index t, Index v)
-    {
-      const Triangle& tri = triangles[t];
-      return 3 * t + (tri[0] == v ? 0 : (tri[1] == v ? 1 : 2));
-    };
-    for (const Adjacency& adj : adjacencies)
-    {
-      corners.Union(cornerOf(adj.A, adj.U), cornerOf(adj.B, adj.U));
-      corners.Union(cornerOf(adj.A, adj.V), cornerOf(adj.B, adj.V));
-    }
-    std::vector<Index> fanRoot(input.Points.size(), -1);
-    std::vector<char> counted(input.Points.size(), 0);
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        const Index v = triangles[t][k];
-        const Index root = corners.Find(static_cast<Index>(3 * t + k));
-        if (fanRoot[v] < 0)
-        {
-          fanRoot[v] = root;
-        }
-        else if (fanRoot[v] != root && !counted[v])
-        {
-          counted[v] = 1;
-          ++report.NonManifoldVertices;
-        }
-      }
-    }
-    if (report.NonManifoldVertices)
-    {
-      report.Error = "surface is not manifold: " +
-        Count(report.NonManifoldVertices, "vertex joins", "vertices join") +
-        " several separate sheets of triangles";
-      return report;
-    }
+    report.Error = "surface is not manifold: " +
+      Count(report.NonManifoldVertices, "vertex joins", "vertices join") +
+      " several separate sheets of triangles";
+    return report;
   }
 
   // 7. Consistent orientation per connected component (breadth-first).
-  const std::size_t nt = triangles.size();
-  // Each triangle's neighbours, in the order of `adjacencies` (one flat
-  // array: a list per triangle costs an allocation each).
-  std::vector<std::size_t> firstNeighbour(nt + 1, 0);
-  for (const Adjacency& adj : adjacencies)
-  {
-    ++firstNeighbour[adj.A + 1];
-    ++firstNeighbour[adj.B + 1];
-  }
-  for (std::size_t t = 0; t < nt; ++t)
-  {
-    firstNeighbour[t + 1] += firstNeighbour[t];
-  }
-  std::vector<std::pair<Index, bool>> neighbourList(firstNeighbour[nt]);
-  {
-    std::vector<std::size_t> next(firstNeighbour.begin(), firstNeighbour.end() - 1);
-    for (const Adjacency& adj : adjacencies)
-    {
-      neighbourList[next[adj.A]++] = { adj.B, adj.Consistent };
-      neighbourList[next[adj.B]++] = { adj.A, adj.Consistent };
-    }
-  }
-  std::vector<Index> component(nt, -1);
-  std::vector<char> flip(nt, 0);
-  std::vector<std::vector<Index>> members;
-  std::size_t nonOrientable = 0;
-  for (std::size_t seed = 0; seed < nt; ++seed)
-  {
-    if (component[seed] >= 0)
-    {
-      continue;
-    }
-    const Index id = static_cast<Index>(members.size());
-    members.emplace_back();
-    std::vector<Index> queue{ static_cast<Index>(seed) };
-    component[seed] = id;
-    for (std::size_t head = 0; head < queue.size(); ++head)
-    {
-      const Index t = queue[head];
-      members[id].push_back(t);
-      for (std::size_t e = firstNeighbour[t]; e < firstNeighbour[t + 1]; ++e)
-      {
-        const auto& [n, consistent] = neighbourList[e];
-        const char wanted = flip[t] ^ (consistent ? 0 : 1);
-        if (component[n] < 0)
-        {
-          component[n] = id;
-          flip[n] = wanted;
-          queue.push_back(n);
-        }
-        else if (flip[n] != wanted)
-        {
-          ++nonOrientable;
-        }
-      }
-    }
-    // Flip the smaller side so that the reported count is the real defect.
-    std::size_t flipped = 0;
-    for (Index t : members[id])
-    {
-      flipped += flip[t];
-    }
-    if (2 * flipped > members[id].size())
-    {
-      for (Index t : members[id])
-      {
-        flip[t] ^= 1;
-      }
-      flipped = members[id].size() - flipped;
-    }
-    report.ReorientedTriangles += flipped;
-  }
-  if (nonOrientable)
+  ShellOrientation shells = OrientShells(nt, edges.Adjacencies);
+  // The edge list goes before the self-intersection test, whose own arrays
+  // then take its room (57 MB with the half-edges on a 268,686-triangle
+  // surface).
+  decltype(edges.Adjacencies)().swap(edges.Adjacencies);
+  const std::vector<Index>& component = shells.Component;
+  const std::vector<std::vector<Index>>& members = shells.Members;
+  report.ReorientedTriangles = shells.Flipped;
+  if (shells.NonOrientable)
   {
     report.Error = "surface is not orientable (like a Moebius strip or Klein bottle)";
     return report;
@@ -698,18 +416,12 @@ SurfacePreparationReport PrepareSurface(
   }
   for (std::size_t t = 0; t < nt; ++t)
   {
-    if (flip[t])
+    if (shells.Flip[t])
     {
       std::swap(triangles[t][1], triangles[t][2]);
     }
   }
   report.Components = members.size();
-  // The edge lists go before the self-intersection test, whose own arrays
-  // then take their room (57 MB on a 268,686-triangle surface).
-  decltype(halfEdges)().swap(halfEdges);
-  decltype(adjacencies)().swap(adjacencies);
-  decltype(neighbourList)().swap(neighbourList);
-  decltype(firstNeighbour)().swap(firstNeighbour);
 
   // 8. Self-intersection. Shells that cross each other, or a shell passing
   // through itself, bound no solid; the nesting test below would misread

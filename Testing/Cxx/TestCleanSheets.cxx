@@ -25,8 +25,6 @@ using medialaxis::test::SimplifiedRun;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 // The ellipsoid with semi-axes (a, b, c), every vertex moved along the
 // normal by a Gaussian of standard deviation `noise` times the diagonal.
 TriangleMesh NoisyEllipsoid(const Point3& axes, double noise, std::uint64_t seed)

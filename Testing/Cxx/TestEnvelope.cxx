@@ -43,8 +43,6 @@ using namespace medialaxis;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 Point3 RandomPoint(Random& rng, double lo, double hi)
 {
   return { lo + (hi - lo) * rng.Uniform(), lo + (hi - lo) * rng.Uniform(),

@@ -12,8 +12,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 // Point and triangle counts of one primitive's surface, and where its points
 // and triangles start in the output.
 struct Piece

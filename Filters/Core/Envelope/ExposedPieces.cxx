@@ -2,6 +2,7 @@
 #include "Envelope/ExposedPieces.h"
 
 #include "Geometry/MortonOrder.h"
+#include "Geometry/Vec3.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -15,8 +16,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 // Candidate envelope samples are drawn only where a primitive surface can
 // be on the boundary of the union. A point x = c_v + r_v n of ball v (or of a
 // cone band, with its normal n) is strictly inside a convex primitive H that

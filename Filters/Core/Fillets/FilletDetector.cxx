@@ -22,7 +22,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 // Faces around more of the ball's circle than this wrap a tube (step 4).
 constexpr double MaximumFilletArc = 1.25 * Pi;
 

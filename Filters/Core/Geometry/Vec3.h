@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Small vector helpers on Point3 for the geometry code.
+// Pi, and small vector helpers on Point3 for the geometry code.
 #ifndef medialaxis_Vec3_h
 #define medialaxis_Vec3_h
 
@@ -12,6 +12,8 @@
 
 namespace medialaxis
 {
+constexpr double Pi = 3.14159265358979323846;
+
 inline Point3 operator+(const Point3& a, const Point3& b)
 {
   return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };

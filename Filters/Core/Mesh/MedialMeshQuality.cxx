@@ -13,8 +13,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 // The angle at `p` of the triangle (p, q, r), in degrees.
 double AngleAt(const Point3& p, const Point3& q, const Point3& r)
 {

@@ -14,8 +14,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 // (min, max, face) per triangle edge, sorted by edge: the runs of equal
 // edges are the triangles around each edge.
 std::vector<std::tuple<Index, Index, Index>> SortedTriangleEdges(const MedialMesh& mesh)

@@ -35,7 +35,7 @@ std::vector<double> EstimateLocalThickness(const TriangleMesh& surface,
   // Hits nearer than this are the start's own neighbourhood, not the far side.
   const double nearest = 1e-9 * diagonal;
   const int rays = std::max(1, options.Rays);
-  const double angle = options.ConeAngleDegrees * M_PI / 180.0;
+  const double angle = options.ConeAngleDegrees * Pi / 180.0;
 
   std::vector<double> thickness(points.size(), std::numeric_limits<double>::infinity());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 256),
@@ -57,7 +57,7 @@ std::vector<double> EstimateLocalThickness(const TriangleMesh& surface,
           Point3 direction = inward;
           if (r > 0)
           {
-            const double around = 2.0 * M_PI * (r - 1) / (rays - 1);
+            const double around = 2.0 * Pi * (r - 1) / (rays - 1);
             direction = std::cos(angle) * inward +
               std::sin(angle) * (std::cos(around) * u + std::sin(around) * v);
           }

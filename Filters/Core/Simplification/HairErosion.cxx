@@ -16,8 +16,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 // The sorted intersection of the sorted ranges [a0, a1) and [b0, b1) into
 // out (the Atlases are short: a few sites each).
 template <typename A, typename B>

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Skeletal/PrimitiveTemplate.h"
 
+#include "Geometry/Vec3.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,8 +14,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 // Two unit vectors perpendicular to unit `axis` and to each other.
 void Frame(const Point3& axis, Point3& e1, Point3& e2)
 {

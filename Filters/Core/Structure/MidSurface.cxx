@@ -21,9 +21,9 @@ namespace
 {
 constexpr double Infinity = std::numeric_limits<double>::infinity();
 // Neighbouring triangles meeting at less than this tessellate one smooth side.
-const double SmoothSideAngle = 20.0 * M_PI / 180.0;
+const double SmoothSideAngle = 20.0 * Pi / 180.0;
 // A lateral face stands at least this steeply on the wall's mid-surface.
-const double LateralFaceSine = std::sin(60.0 * M_PI / 180.0);
+const double LateralFaceSine = std::sin(60.0 * Pi / 180.0);
 // A junction's branches reach this many wall thicknesses (along the sheet)
 // from the nearest centred point: the T's arcs about one, a rib's fillets
 // about two. Farther, the sheet does not join two walls but a wall and
@@ -37,7 +37,7 @@ const int FoldRounds = 30;
 // Walls smaller than this share of the mid-surface are fragments.
 const double MinimumWallFraction = 0.001;
 // A wall bends by less than this from one triangle to the next.
-const double SameWallCosine = std::cos(30.0 * M_PI / 180.0);
+const double SameWallCosine = std::cos(30.0 * Pi / 180.0);
 
 // Slivers (height under 5% of their longest edge) tilt with the last digits
 // of their points: their normals say nothing.
@@ -212,7 +212,7 @@ MidSurface ExtractMidSurface(const MedialMesh& mesh, const MedialStructure& stru
     for (Index u : adjacency.Neighbour[t])
     {
       const double angle = u < 0
-        ? M_PI
+        ? Pi
         : std::acos(std::max(-1.0, std::min(1.0, Dot(surfaceNormal[t], surfaceNormal[u]))));
       if (angle < SmoothSideAngle && angle > std::fabs(facetTurn[t]))
       {

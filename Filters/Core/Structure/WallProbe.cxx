@@ -13,20 +13,20 @@ namespace medialaxis
 namespace
 {
 // A chord is centred only where it meets both sides at angles this close.
-const double ChordAngleTolerance = 1.0 * M_PI / 180.0;
+const double ChordAngleTolerance = 1.0 * Pi / 180.0;
 // A chord is centred only between sides this close to parallel (plus the
 // tessellation's angle where both sides are curved): between
 // sides that converge more (a fillet's start), its middle follows their
 // bisector, away from the wall's plane. Drafted walls (up to a degree a
 // side) still pass.
-const double ChordSidesTolerance = 2.0 * M_PI / 180.0;
+const double ChordSidesTolerance = 2.0 * Pi / 180.0;
 // A side faces a sheet whose normal is within this angle of its own.
-const double SideFacingCosine = std::cos(45.0 * M_PI / 180.0);
+const double SideFacingCosine = std::cos(45.0 * Pi / 180.0);
 // Centring moves a vertex across its sheet, and along it by at most this
 // fraction of the thickness (the noise of the discrete medial axis).
 const double MaximumSlide = 0.1;
 // Chords tilted further from the sides' normals are not trusted.
-const double MaximumChordTilt = 30.0 * M_PI / 180.0;
+const double MaximumChordTilt = 30.0 * Pi / 180.0;
 
 // Any unit vector perpendicular to the unit vector n.
 Point3 Perpendicular(const Point3& n)

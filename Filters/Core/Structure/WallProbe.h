@@ -7,6 +7,7 @@
 #ifndef medialaxis_WallProbe_h
 #define medialaxis_WallProbe_h
 
+#include "Geometry/Vec3.h"
 #include "Mesh/TriangleLocator.h"
 
 #include <cmath>
@@ -15,7 +16,7 @@
 namespace medialaxis
 {
 // Planes whose normals are this close continue one another (one wall).
-const double SamePlaneCosine = std::cos(15.0 * M_PI / 180.0);
+const double SamePlaneCosine = std::cos(15.0 * Pi / 180.0);
 
 // Thickness probes on the closed surface.
 struct WallProbe

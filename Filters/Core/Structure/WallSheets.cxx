@@ -106,7 +106,7 @@ WallSheets FindWallSheets(
   result.FaceTaper.resize(nf);
   result.FaceThickness.resize(nf);
   result.FaceParallel.resize(nf);
-  const double maximumSlope = std::sin(0.5 * std::min(options.MaximumNormalDeviation, M_PI));
+  const double maximumSlope = std::sin(0.5 * std::min(options.MaximumNormalDeviation, Pi));
   std::vector<double> area(nf), parallelArea(nf, 0.0);
   for (std::size_t f = 0; f < nf; ++f)
   {

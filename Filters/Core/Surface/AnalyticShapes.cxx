@@ -13,8 +13,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 // Lattice coordinates along one axis, on the surface of the enclosing box:
 // the fillet band maps tan-uniformly so that arc segments are equal-angle.
 std::vector<double> AxisSamples(double half, double rho, int bandSegments, double spacing)

@@ -13,8 +13,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 void RequireFilletRadius(double r)
 {
   if (!(r >= 0.0) || !std::isfinite(r))

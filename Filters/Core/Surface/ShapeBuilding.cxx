@@ -7,11 +7,6 @@
 
 namespace medialaxis
 {
-namespace
-{
-constexpr double Pi = 3.14159265358979323846;
-}
-
 // Splits quad (a, b, c, d), given counter-clockwise seen from outside, along
 // its shorter diagonal.
 void AddQuad(TriangleMesh& mesh, Index a, Index b, Index c, Index d)

@@ -19,8 +19,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
 std::string Count(std::size_t n, const char* singular, const char* plural)
 {
   return std::to_string(n) + ' ' + (n == 1 ? singular : plural);

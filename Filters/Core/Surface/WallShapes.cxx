@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Surface/WallShapes.h"
 
+#include "Geometry/Vec3.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -9,7 +11,6 @@ namespace medialaxis
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 using Point2 = std::array<double, 2>;
 
 void Require(bool condition, const char* message)

@@ -396,6 +396,45 @@ TEST(MedialTopologyRepair, CapsALoopBentRoundAConcavePartInSeveralFans)
   EXPECT_TRUE(ValidateMedialMesh(result.Mesh).IsValid()) << ValidateMedialMesh(result.Mesh).Message;
 }
 
+TEST(MedialTopologyRepair, CapsALoopRoundAPocketWithACupPastItsTip)
+{
+  // A slab (|x|, |y| < 5, |z| < 1) with a conical pocket from its top face
+  // (radius 0.5 there) down to a tip at z = -0.9, 0.1 above the bottom face,
+  // and round the pocket a tube (radius 1, |z| < 0.5): a spurious loop in a
+  // solid of genus 0. Every flat disk on a rim crosses the pocket; a cup
+  // whose hub lies in the thin wall under the tip (which the complex does
+  // not reach) closes it.
+  auto inPocket = [](const Point3& p)
+  { return p[2] > -0.9 && std::hypot(p[0], p[1]) < 0.5 * (p[2] + 0.9) / 1.9; };
+  auto inside = [inPocket](const Point3& p)
+  { return std::abs(p[0]) < 5.0 && std::abs(p[1]) < 5.0 && std::abs(p[2]) < 1.0 && !inPocket(p); };
+  const TopologyRepairQueries slab{ inside, [](const Point3& p) { return 1.0 - std::abs(p[2]); },
+    [inside](const Point3& a, const Point3& b)
+    {
+      for (int k = 0; k <= 2000; ++k)
+      {
+        if (!inside(a + (k / 2000.0) * (b - a)))
+        {
+          return true;
+        }
+      }
+      return false;
+    } };
+  VoronoiMedialAxisResult result;
+  AddTube(result, 16, 1.0, -0.5);
+  ASSERT_EQ(EulerCharacteristic(result.Mesh), 0);
+  const std::size_t before = result.Mesh.Centers.size();
+  const TopologyRepairCounts counts = RepairMedialTopology(result, { 1, 0 }, slab);
+  EXPECT_EQ(counts.FilledHoles, 1u);
+  EXPECT_EQ(EulerCharacteristic(result.Mesh), 1);
+  ASSERT_EQ(result.Mesh.Centers.size(), before + 1);
+  const Point3 hub = result.Mesh.Centers.back();
+  std::cout << "cup hub at (" << hub[0] << ", " << hub[1] << ", " << hub[2] << ")\n";
+  EXPECT_TRUE(inside(hub));
+  EXPECT_LT(hub[2], -0.9); // past the tip
+  EXPECT_TRUE(ValidateMedialMesh(result.Mesh).IsValid()) << ValidateMedialMesh(result.Mesh).Message;
+}
+
 namespace
 {
 // Whether any of the triangles from `first` on survives peeling `faces`

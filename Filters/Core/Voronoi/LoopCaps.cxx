@@ -3,7 +3,10 @@
 
 #include "Geometry/Vec3.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <utility>
 
 namespace medialaxis
 {
@@ -11,6 +14,66 @@ namespace repair
 {
 namespace
 {
+// A point of the segment from a to b strictly inside the surface, where both
+// ends are outside but the segment crosses the surface (a wall thinner than
+// the segment): the middles of ever shorter pieces that cross, shortest
+// last (breadth first), 64 pieces at most.
+bool InsideBetween(
+  const Point3& a, const Point3& b, const TopologyRepairQueries& queries, Point3& inside)
+{
+  constexpr std::size_t maxPieces = 64;
+  std::vector<std::pair<Point3, Point3>> pieces{ { a, b } };
+  for (std::size_t k = 0; k < pieces.size() && k < maxPieces; ++k)
+  {
+    const auto [from, to] = pieces[k];
+    const Point3 middle = 0.5 * (from + to);
+    if (queries.Inside(middle))
+    {
+      inside = middle;
+      return true;
+    }
+    for (const auto& [p, q] : { std::pair(from, middle), std::pair(middle, to) })
+    {
+      if (queries.Crosses(p, q))
+      {
+        pieces.emplace_back(p, q);
+      }
+    }
+  }
+  return false;
+}
+
+// Points of the segment from a to b inside the surface, nearest a first: the
+// inside ones of 64 steps along it, and for a step whose ends are outside
+// but which crosses the surface (a wall thinner than a step), a point inside
+// that wall.
+std::vector<Point3> InsidePointsAlong(
+  const Point3& a, const Point3& b, const TopologyRepairQueries& queries)
+{
+  constexpr int steps = 64;
+  std::vector<Point3> points;
+  Point3 previous = a;
+  bool previousInside = queries.Inside(a);
+  for (int i = 1; i <= steps; ++i)
+  {
+    const Point3 p = a + (i / double(steps)) * (b - a);
+    const bool inside = queries.Inside(p);
+    Point3 wall;
+    if (!inside && !previousInside && queries.Crosses(previous, p) &&
+      InsideBetween(previous, p, queries, wall))
+    {
+      points.push_back(wall);
+    }
+    if (inside)
+    {
+      points.push_back(p);
+    }
+    previous = p;
+    previousInside = inside;
+  }
+  return points;
+}
+
 // The hub of a fan over `loop`: a point inside the surface from which every
 // loop vertex (and, with `edgeMiddles`, the middle of every loop edge) is
 // seen without crossing it. False if none of the candidates is.
@@ -68,6 +131,91 @@ bool FindHub(const MedialMesh& mesh, const std::vector<Index>& loop,
       {
         hub = p;
         return true;
+      }
+    }
+  }
+  if (edgeMiddles)
+  {
+    return false; // a part of a split cap: flat fans only
+  }
+  // A cup: round a pocket of outside space (a dent whose tip stops short of
+  // the far side of a thin part) every flat disk on the loop crosses the
+  // pocket, but one bulging past the pocket's tip does not. The complex
+  // itself reaches past the tip, inside the surface: its vertices within
+  // the loop's reach of the centroid are tried as hubs, nearest first.
+  double reach = 0.0;
+  for (Index v : loop)
+  {
+    reach = std::max(reach, Norm(mesh.Centers[v] - centroid));
+  }
+  std::vector<std::pair<double, Index>> near;
+  for (Index v = 0; v < static_cast<Index>(mesh.Centers.size()); ++v)
+  {
+    const double distance = Norm(mesh.Centers[v] - centroid);
+    if (distance <= reach)
+    {
+      near.emplace_back(distance, v);
+    }
+  }
+  // Sorted by distance, then index: the order, and so the hub, is the same
+  // on every run. A loop round a handle has no hub at all: a bounded number
+  // of tries keeps it cheap.
+  constexpr std::size_t maxTries = 256;
+  const std::size_t tries = std::min(near.size(), maxTries + loop.size());
+  std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(tries), near.end());
+  std::vector<Index> sortedLoop(loop);
+  std::sort(sortedLoop.begin(), sortedLoop.end());
+  for (std::size_t k = 0, tried = 0; k < tries && tried < maxTries; ++k)
+  {
+    const Index v = near[k].second;
+    if (std::binary_search(sortedLoop.begin(), sortedLoop.end(), v))
+    {
+      continue;
+    }
+    ++tried;
+    if (seesAll(mesh.Centers[v]))
+    {
+      hub = mesh.Centers[v];
+      return true;
+    }
+  }
+  // Where the complex does not reach past the tip (the wall there thinner
+  // than the sampling could follow), points inside the surface along rays
+  // from the centroid: along the loop's axis both ways, and tilted off it
+  // (a pocket need not point along the axis), as far as 8 times the reach.
+  Point3 axis{ 0.0, 0.0, 0.0 };
+  for (std::size_t k = 0; k < loop.size(); ++k)
+  {
+    axis = axis + Cross(targets[k] - centroid, targets[(k + 1) % loop.size()] - centroid);
+  }
+  if (!(Norm(axis) > 0.0) || !(reach > 0.0))
+  {
+    return false;
+  }
+  axis = (1.0 / Norm(axis)) * axis;
+  const Point3 helper =
+    std::fabs(axis[0]) < 0.6 ? Point3{ 1.0, 0.0, 0.0 } : Point3{ 0.0, 1.0, 0.0 };
+  const Point3 across = (1.0 / Norm(Cross(axis, helper))) * Cross(axis, helper);
+  const Point3 across2 = Cross(axis, across);
+  for (double tilt : { 0.0, 15.0, 30.0, 45.0 })
+  {
+    const int azimuths = tilt == 0.0 ? 1 : 8;
+    for (int k = 0; k < azimuths; ++k)
+    {
+      const double phi = 2.0 * Pi * k / azimuths, theta = tilt * Pi / 180.0;
+      const Point3 off = std::cos(phi) * across + std::sin(phi) * across2;
+      for (double side : { 1.0, -1.0 })
+      {
+        const Point3 direction = std::cos(theta) * (side * axis) + std::sin(theta) * off;
+        for (const Point3& p :
+          InsidePointsAlong(centroid, centroid + (8.0 * reach) * direction, queries))
+        {
+          if (seesAll(p))
+          {
+            hub = p;
+            return true;
+          }
+        }
       }
     }
   }

@@ -31,7 +31,12 @@ struct LoopCap
 /// loop (a loop bent round a concave part), the loop split in two by a chord
 /// inside the surface and each half capped the same way, `depth` times at
 /// most, and 64 hub searches at most. Fans of a split cap must also see
-/// the middle of each of their edges. False if no cap is found.
+/// the middle of each of their edges. Where no flat fan fits (a loop round a
+/// pocket of outside space, a dent whose tip stops short of the far side),
+/// a cup over the whole loop: its hub a vertex of the complex near the
+/// loop, or a point inside the surface on a ray from the centroid (in a wall
+/// thinner than the sampling, past the pocket's tip). False if no cap is
+/// found.
 bool FindCap(const MedialMesh& mesh, const std::vector<Index>& loop,
   const TopologyRepairQueries& queries, LoopCap& cap, int depth = 3);
 }

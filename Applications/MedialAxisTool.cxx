@@ -220,6 +220,13 @@ int main(int argc, char** argv)
                    "wrapped instead, within "
                 << 100.0 * validator->GetRepairDeviation() << "% of the diagonal of the input\n";
     }
+    else if (std::string(validator->GetRepairMethod()) == "pulled apart")
+    {
+      std::cout << "  repaired: " << validator->GetNumberOfCrossingPairs()
+                << " pairs of crossing triangles far apart, a vertex poking through a wall: "
+                   "moved back behind it, by at most "
+                << 100.0 * validator->GetRepairDeviation() << "% of the diagonal of the input\n";
+    }
     else
     {
       std::cout << "  repaired: " << validator->GetNumberOfCrossingPairs()
@@ -581,9 +588,7 @@ int main(int argc, char** argv)
          << ",\n  \"repair\": {\"repaired\": " << (validator->GetRepaired() ? "true" : "false")
          << ", \"crossing_pairs\": " << validator->GetNumberOfCrossingPairs()
          << ", \"removed_area\": " << validator->GetRemovedArea() << ", \"method\": "
-         << (!validator->GetRepaired()    ? "null"
-                : validator->GetWrapped() ? "\"alpha wrap\""
-                                          : "\"resolved crossings\"")
+         << (validator->GetRepaired() ? JsonString(validator->GetRepairMethod()) : "null")
          << ", \"deviation\": " << validator->GetRepairDeviation() << "}"
          << ",\n  \"preset\": " << (o.Cad ? "\"cad\"" : "\"organic\"")
          << ", \"preset_chosen\": " << (o.AutomaticPreset ? "\"auto\"" : "\"given\"");

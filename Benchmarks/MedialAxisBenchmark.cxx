@@ -169,8 +169,12 @@ bool LoadSurface(
     stages.push_back(Measure("subdivide", [&] { subdivision->Update(); }));
     surface = subdivision->GetOutput();
   }
+  // As the one-click filter prepares it: crossings repaired.
+  SurfacePreparationOptions options;
+  options.RepairSelfIntersections = true;
   SurfacePreparationReport report;
-  stages.push_back(Measure("prepare", [&] { report = PrepareSurfaceMesh(surface, mesh); }));
+  stages.push_back(
+    Measure("prepare", [&] { report = PrepareSurfaceMesh(surface, mesh, options); }));
   if (!report.Ok())
   {
     std::cerr << spec << ": " << report.Error << "\n";

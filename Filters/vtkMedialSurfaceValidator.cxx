@@ -64,6 +64,7 @@ int vtkMedialSurfaceValidator::RequestData(
   this->RemovedArea = report.RemovedArea;
   this->Wrapped = report.RepairMethod == "alpha wrap";
   this->RepairDeviation = report.RepairDeviation;
+  this->RepairMethod = report.RepairMethod;
   this->NumberOfCrossingPairs =
     static_cast<vtkIdType>(report.CrossingShells + report.CrossingFarApart);
 
@@ -76,7 +77,7 @@ int vtkMedialSurfaceValidator::RequestData(
 
   for (const auto& note : report.Notes)
   {
-    if (this->Wrapped && note.rfind("self-intersections repaired by wrapping", 0) == 0)
+    if (medialaxis::IsMovedSurfaceNote(note))
     {
       vtkWarningMacro(<< note);
     }
@@ -120,6 +121,7 @@ void vtkMedialSurfaceValidator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Repaired: " << this->Repaired << "\n";
   os << indent << "Wrapped: " << this->Wrapped << "\n";
   os << indent << "RepairDeviation: " << this->RepairDeviation << "\n";
+  os << indent << "RepairMethod: " << this->RepairMethod << "\n";
   os << indent << "Valid: " << this->Valid << "\n";
   os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
 }

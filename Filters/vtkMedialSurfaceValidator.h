@@ -26,7 +26,13 @@
  * up (three triangles crossing at one point, common in exported booleans),
  * the surface is wrapped instead (CGAL's alpha wrapping, balls of
  * WrapAlpha times the diagonal): Wrapped is set, RepairDeviation says how
- * far the wrap strays from the input, and a warning says so.
+ * far the wrap strays from the input, and a warning says so. A small contact
+ * (the crossings within 1% of the diagonal) that cannot be resolved exactly
+ * is kept as it is, unless it is a vertex poking through a wall far from it
+ * on the surface (a dent's tip through the far side of a thin part): then
+ * that vertex is moved back behind the wall, 0.1% of the diagonal clear of
+ * it, RepairMethod is "pulled apart", RepairDeviation gives the move and a
+ * warning says so.
  *
  * The output's field data carries the counts (arrays named like the getters).
  */
@@ -108,6 +114,9 @@ public:
   /// bounding-box diagonal (0 when the crossings were resolved).
   vtkGetMacro(Wrapped, bool);
   vtkGetMacro(RepairDeviation, double);
+  /// Which repair ran: "resolved crossings", "alpha wrap" or "pulled apart"
+  /// (see the class description); empty when none did.
+  const char* GetRepairMethod() const { return this->RepairMethod.c_str(); }
   vtkGetMacro(Area, double);
   vtkGetMacro(Volume, double);
   ///@}
@@ -128,6 +137,7 @@ protected:
   double RemovedArea = 0.0;
   bool Wrapped = false;
   double RepairDeviation = 0.0;
+  std::string RepairMethod;
   vtkIdType NumberOfCrossingPairs = 0;
   std::string ErrorMessage;
   std::string Notes;

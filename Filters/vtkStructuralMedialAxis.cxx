@@ -295,7 +295,7 @@ int vtkStructuralMedialAxis::RequestData(
     }
     for (const std::string& note : repair.Notes)
     {
-      if (note.rfind("self-intersections repaired by wrapping", 0) == 0)
+      if (medialaxis::IsMovedSurfaceNote(note))
       {
         vtkWarningMacro(<< note);
       }
@@ -526,6 +526,8 @@ int vtkStructuralMedialAxis::RequestData(
       mat, "RepairRemovedAreaFraction", repair.RemovedArea / (repair.Area + repair.RemovedArea));
     medialaxis::AddFieldDouble(mat, "RepairSeconds", repairSeconds);
     medialaxis::AddFieldValue(mat, "RepairWrapped", repair.RepairMethod == "alpha wrap" ? 1 : 0);
+    medialaxis::AddFieldValue(
+      mat, "RepairPulledApart", repair.RepairMethod == "pulled apart" ? 1 : 0);
     medialaxis::AddFieldDouble(mat, "RepairDeviationFraction", repair.RepairDeviation);
   }
   if (this->MaximumError > 0.0)

@@ -32,7 +32,10 @@
  * wrapped instead (the validator's fallback): a warning says so, with
  * `RepairWrapped` 1 and `RepairDeviationFraction` (the largest distance from
  * the wrap to the input over the diagonal); `InputTriangleId` is then the
- * nearest input cell.
+ * nearest input cell. A small contact that cannot be resolved, a vertex
+ * poking through a wall far from it on the surface, is pulled apart instead
+ * (see vtkMedialSurfaceValidator): a warning says so, with
+ * `RepairPulledApart` 1 and `RepairDeviationFraction` the largest move.
  *
  * The medial axis of a solid has one loop per handle. Where the initial
  * medial mesh has fewer (a handle thinner than the sampling could follow),

@@ -179,6 +179,10 @@ def repair_warning(report):
         return ("surface wrapped: %s pairs of crossing triangles could not be resolved exactly; "
                 "the wrap lies within %.3g%% of the diagonal of the input"
                 % (pairs, 100.0 * repair.get("deviation", 0.0)))
+    if repair.get("method") == "pulled apart":
+        return ("surface pulled apart: %s pairs of triangles far apart crossed where a vertex pokes "
+                "through a wall; moved back by at most %.3g%% of the diagonal"
+                % (pairs, 100.0 * repair.get("deviation", 0.0)))
     return "surface repaired: %s pairs of crossing triangles resolved" % pairs
 
 

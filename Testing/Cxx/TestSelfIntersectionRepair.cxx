@@ -230,3 +230,89 @@ TEST(SelfIntersectionRepair, ValidatorSaysItWrappedAndCanBeToldNotTo)
       std::string(validator->GetErrorMessage()).find("repairing it failed"), std::string::npos);
   }
 }
+
+namespace
+{
+// A plate 4 x 4 x 0.4 with a pyramid-shaped dent from the top whose tip, one
+// top vertex moved down, pokes through the bottom face by `depth` (inside a
+// bottom triangle, not over its corners): the air of the dent meets the air
+// under the plate through a hole `depth` deep, far too small for a sampling.
+TriangleMesh PlateWithPiercingDent(double depth, Index& tip)
+{
+  TriangleMesh plate = MakeRoundedBox({ 4.0, 4.0, 0.4 }, 0.0, 12);
+  tip = -1;
+  double best = HUGE_VAL;
+  for (std::size_t v = 0; v < plate.Points.size(); ++v)
+  {
+    const Point3& p = plate.Points[v];
+    const double d = Norm(p - Point3{ 0.3, 0.3, 0.2 });
+    if (p[2] > 0.1 && d < best)
+    {
+      best = d;
+      tip = static_cast<Index>(v);
+    }
+  }
+  // A third of a grid step aside, so that the tip is over the inside of a
+  // bottom triangle.
+  plate.Points[tip] = plate.Points[tip] + Point3{ 0.11, 0.05, -0.4 - depth };
+  return plate;
+}
+}
+
+TEST(SelfIntersectionRepair, PullsADentsTipPokingThroughAWallBackBehindIt)
+{
+  Index tip = -1;
+  const TriangleMesh pierced = PlateWithPiercingDent(1e-6, tip);
+  ASSERT_FALSE(FindSelfIntersections(pierced.Points, pierced.Triangles).empty());
+  SurfacePreparationOptions options;
+  options.RepairSelfIntersections = true;
+  TriangleMesh prepared;
+  const SurfacePreparationReport report = PrepareSurface(pierced, prepared, options);
+  ASSERT_TRUE(report.Ok()) << report.Error;
+  std::cout << "pulled apart: " << report.CrossingFarApart << " pairs far apart, moved by "
+            << 100.0 * report.RepairDeviation << "% of the diagonal\n";
+  EXPECT_EQ(report.RepairMethod, "pulled apart");
+  EXPECT_GT(report.CrossingFarApart, 0u);
+  // Moved the gap behind the wall (and the depth it poked through), no more.
+  EXPECT_GE(report.RepairDeviation, options.ContactGap);
+  EXPECT_LE(report.RepairDeviation, options.ContactGap * 1.01);
+  EXPECT_TRUE(FindSelfIntersections(prepared.Points, prepared.Triangles).empty());
+  // One point moved (the tip), to the gap behind the bottom face.
+  std::size_t moved = 0;
+  Point3 movedTo{ 0.0, 0.0, 0.0 };
+  for (const Point3& p : prepared.Points)
+  {
+    const bool kept = std::any_of(pierced.Points.begin(), pierced.Points.end(),
+      [&p](const Point3& q) { return Norm(p - q) == 0.0; });
+    moved += kept ? 0 : 1;
+    movedTo = kept ? movedTo : p;
+  }
+  EXPECT_EQ(moved, 1u);
+  const double diagonal = Norm(Point3{ 4.0, 4.0, 0.4 });
+  EXPECT_NEAR(movedTo[2], -0.2 + options.ContactGap * diagonal, 1e-9);
+
+  // Without it, exact resolution gives up on the contact and the surface
+  // is refused.
+  options.ContactGap = 0.0;
+  const SurfacePreparationReport refused = PrepareSurface(pierced, prepared, options);
+  EXPECT_FALSE(refused.Ok());
+  EXPECT_NE(refused.Error.find("passes through itself"), std::string::npos) << refused.Error;
+}
+
+TEST(SelfIntersectionRepair, MedialAxisOfAPlateWithAPiercingDentHasThePlatesTopology)
+{
+  Index tip = -1;
+  vtkNew<vtkStructuralMedialAxis> structural;
+  auto warnings = vtkSmartPointer<test::ErrorCatcher>::New();
+  structural->AddObserver(vtkCommand::WarningEvent, warnings);
+  structural->SetInputData(test::ToPolyData(PlateWithPiercingDent(1e-6, tip)));
+  structural->SetNumberOfSamples(3000);
+  structural->SetTargetNumberOfVertices(300);
+  structural->Update();
+  vtkPolyData* mat = structural->GetOutput();
+  ASSERT_GT(mat->GetNumberOfPoints(), 0);
+  EXPECT_EQ(test::FieldValue(mat, "RepairPulledApart"), 1.0);
+  EXPECT_GT(test::FieldValue(mat, "RepairDeviationFraction"), 0.0);
+  EXPECT_NE(warnings->Last.find("contact pulled apart"), std::string::npos) << warnings->Last;
+  EXPECT_EQ(EulerCharacteristic(mat), 1); // genus 0, as the mesh
+}

@@ -3,6 +3,7 @@
 
 #include "Geometry/Vec3.h"
 #include "Surface/CoincidentPoints.h"
+#include "Surface/ContactSeparation.h"
 #include "Surface/DegenerateTriangles.h"
 #include "Surface/SelfIntersection.h"
 #include "Surface/SelfIntersectionRepair.h"
@@ -19,6 +20,10 @@ namespace medialaxis
 {
 namespace
 {
+// How the notes of a surface moved by the repair begin.
+constexpr const char* WrappedNote = "self-intersections repaired by wrapping";
+constexpr const char* PulledApartNote = "contact pulled apart: the surface passed through itself";
+
 std::string Count(std::size_t n, const char* singular, const char* plural)
 {
   return std::to_string(n) + ' ' + (n == 1 ? singular : plural);
@@ -158,6 +163,27 @@ double UsedDiagonal(const TriangleMesh& mesh)
   return Norm(hi - lo);
 }
 
+// The input's notes and counts in the report of its repaired surface.
+void KeepInputCounts(const SurfacePreparationReport& report, SurfacePreparationReport& repaired)
+{
+  repaired.Notes.insert(repaired.Notes.begin(), report.Notes.begin(), report.Notes.end());
+  repaired.InputPoints = report.InputPoints;
+  repaired.InputTriangles = report.InputTriangles;
+  repaired.NonFinitePoints = report.NonFinitePoints;
+  repaired.MergedPoints = report.MergedPoints;
+  repaired.UnusedPoints = report.UnusedPoints;
+  repaired.DegenerateTriangles = report.DegenerateTriangles;
+  repaired.SplitNeighbours = report.SplitNeighbours;
+  repaired.DuplicateTriangles = report.DuplicateTriangles;
+  repaired.ReorientedTriangles = report.ReorientedTriangles;
+  repaired.SelfIntersections = report.SelfIntersections;
+  repaired.CrossingShells = report.CrossingShells;
+  repaired.CrossingFarApart = report.CrossingFarApart;
+  repaired.PassThroughExtent = report.PassThroughExtent;
+  repaired.Crossings = report.Crossings;
+  repaired.Repaired = true;
+}
+
 // The crossings found by `report` resolved: every shell turned outward on
 // its own, the union's boundary prepared again; `repaired` receives its
 // report, with the input's counts and notes. Where the crossings cannot be
@@ -215,8 +241,7 @@ std::string RepairAndPrepare(const std::vector<Point3>& points, std::vector<Tria
   if (wrapped)
   {
     repaired.Notes.insert(repaired.Notes.begin(),
-      "self-intersections repaired by wrapping: resolving " +
-        Count(report.SelfIntersections, "pair", "pairs") +
+      std::string(WrappedNote) + ": resolving " + Count(report.SelfIntersections, "pair", "pairs") +
         " of crossing triangles exactly failed (" + repair.Error +
         "), so an alpha wrap (balls of " + Percent(wrap.Alpha / diagonal) + " of the diagonal, " +
         Percent(wrap.Offset / diagonal) + " outside) replaced the surface; it lies within " +
@@ -231,27 +256,81 @@ std::string RepairAndPrepare(const std::vector<Point3>& points, std::vector<Tria
         Percent(inputArea > 0.0 ? repair.RemovedArea / inputArea : 0.0) +
         " of the area (the parts inside) removed");
   }
-  repaired.Notes.insert(repaired.Notes.begin(), report.Notes.begin(), report.Notes.end());
-  repaired.InputPoints = report.InputPoints;
-  repaired.InputTriangles = report.InputTriangles;
-  repaired.NonFinitePoints = report.NonFinitePoints;
-  repaired.MergedPoints = report.MergedPoints;
-  repaired.UnusedPoints = report.UnusedPoints;
-  repaired.DegenerateTriangles = report.DegenerateTriangles;
-  repaired.SplitNeighbours = report.SplitNeighbours;
-  repaired.DuplicateTriangles = report.DuplicateTriangles;
-  repaired.ReorientedTriangles = report.ReorientedTriangles;
-  repaired.SelfIntersections = report.SelfIntersections;
-  repaired.CrossingShells = report.CrossingShells;
-  repaired.CrossingFarApart = report.CrossingFarApart;
-  repaired.PassThroughExtent = report.PassThroughExtent;
-  repaired.Crossings = report.Crossings;
-  repaired.Repaired = true;
+  KeepInputCounts(report, repaired);
   repaired.RemovedArea = wrapped ? 0.0 : repair.RemovedArea;
   repaired.RepairMethod = wrapped ? "alpha wrap" : "resolved crossings";
   repaired.RepairDeviation = wrapped ? wrap.LargestDeviation / diagonal : 0.0;
   return {};
 }
+
+// A small contact pulled apart (ContactSeparation.h): the piercing vertices
+// of the far-apart crossings moved back `options.ContactGap` of the diagonal
+// behind the walls they poke through, the moved surface checked to cross
+// itself no more (but in local folds) and prepared; `repaired` receives its
+// report. Returns why it could not be done, or an empty string.
+std::string SeparateAndPrepare(const std::vector<Point3>& points,
+  const std::vector<Triangle>& triangles, const std::vector<std::vector<Index>>& shells,
+  const std::vector<TriangleCrossing>& farApart, const SurfacePreparationReport& report,
+  double diagonal, const SurfacePreparationOptions& options, TriangleMesh& output,
+  SurfacePreparationReport& repaired)
+{
+  std::vector<signed char> outward(triangles.size(), 1);
+  for (const std::vector<Index>& shell : shells)
+  {
+    if (SignedVolumeOf(points, triangles, shell) < 0.0)
+    {
+      for (Index t : shell)
+      {
+        outward[t] = -1;
+      }
+    }
+  }
+  const ContactSeparation separation =
+    SeparatePiercingVertices(points, triangles, outward, farApart, options.ContactGap * diagonal);
+  if (!separation.Error.empty())
+  {
+    return separation.Error;
+  }
+  const std::vector<TriangleCrossing> left = FindSelfIntersections(separation.Points, triangles);
+  std::vector<std::vector<Index>> vertexTriangles(points.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for (Index v : triangles[t])
+    {
+      vertexTriangles[v].push_back(static_cast<Index>(t));
+    }
+  }
+  for (const TriangleCrossing& c : left)
+  {
+    if (!AreSurfaceNeighbours(triangles, vertexTriangles, c.A, c.B, options.LocalFoldRings))
+    {
+      return "the surface still passes through itself with the tips moved back";
+    }
+  }
+  SurfacePreparationOptions again = options;
+  again.RepairSelfIntersections = false;
+  again.KnownCrossings = &left;
+  repaired = PrepareSurface(TriangleMesh{ separation.Points, triangles }, output, again);
+  if (!repaired.Ok())
+  {
+    return "the surface with the tips moved back is not usable: " + repaired.Error;
+  }
+  repaired.Notes.insert(repaired.Notes.begin(),
+    std::string(PulledApartNote) + " near " + Location(farApart.front()) + " (" +
+      Count(farApart.size(), "pair", "pairs") + " of triangles far apart): " +
+      Count(separation.MovedVertices, "vertex poking", "vertices poking") +
+      " through a wall moved back behind it, by at most " +
+      Percent(separation.LargestMove / diagonal) + " of the diagonal");
+  KeepInputCounts(report, repaired);
+  repaired.RepairMethod = "pulled apart";
+  repaired.RepairDeviation = separation.LargestMove / diagonal;
+  return {};
+}
+}
+
+bool IsMovedSurfaceNote(const std::string& note)
+{
+  return note.rfind(WrappedNote, 0) == 0 || note.rfind(PulledApartNote, 0) == 0;
 }
 
 SurfacePreparationReport PrepareSurface(
@@ -477,12 +556,14 @@ SurfacePreparationReport PrepareSurface(
     // Where the surface passes through itself: the box of all crossings of
     // triangles far apart on the surface.
     const TriangleCrossing* farApart = nullptr;
+    std::vector<TriangleCrossing> farApartCrossings;
     Point3 lo{ HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
     for (const TriangleCrossing& c : crossings)
     {
       if (!AreSurfaceNeighbours(triangles, vertexTriangles, c.A, c.B, options.LocalFoldRings))
       {
         farApart = farApart ? farApart : &c;
+        farApartCrossings.push_back(c);
         ++report.CrossingFarApart;
         for (int k = 0; k < 3; ++k)
         {
@@ -492,6 +573,20 @@ SurfacePreparationReport PrepareSurface(
       }
     }
     report.PassThroughExtent = farApart ? Norm(hi - lo) / diagonal : 0.0;
+    // A vertex poking through a wall (by less than half its shortest edge)
+    // is pulled apart: resolved exactly, the contact would leave a hole no
+    // sampling could see.
+    std::string notSeparated = "pulling apart is off";
+    if (options.RepairSelfIntersections && farApart && options.ContactGap > 0.0)
+    {
+      SurfacePreparationReport repaired;
+      notSeparated = SeparateAndPrepare(input.Points, triangles, members, farApartCrossings, report,
+        diagonal, options, output, repaired);
+      if (notSeparated.empty())
+      {
+        return repaired;
+      }
+    }
     if (report.PassThroughExtent > options.MaxPassThroughExtent)
     {
       report.Error = "surface intersects itself: " +
@@ -500,9 +595,10 @@ SurfacePreparationReport PrepareSurface(
         " (the surface passes through itself)";
       return refuseUnlessRepaired();
     }
-    // A small contact is kept unless it can be resolved exactly: wrapping
-    // the whole surface for it would cost more than it mends. (Local folds
-    // are kept as they are: resolving them misclassifies the patches.)
+    // Other small contacts are kept unless they can be resolved exactly:
+    // wrapping the whole surface for one would cost more than it mends.
+    // (Local folds are kept as they are: resolving them misclassifies the
+    // patches.)
     if (options.RepairSelfIntersections && farApart)
     {
       SurfacePreparationReport repaired;
@@ -513,7 +609,8 @@ SurfacePreparationReport PrepareSurface(
         return repaired;
       }
       output = TriangleMesh();
-      report.Notes.push_back("the crossings could not be repaired (" + failed + ")");
+      report.Notes.push_back("the crossings could not be repaired (pulling the contact apart: " +
+        notSeparated + "; resolving it: " + failed + ")");
     }
     const std::size_t folds = crossings.size() - report.CrossingFarApart;
     if (folds)

@@ -39,6 +39,14 @@ struct SurfacePreparationOptions
   /// the bounding-box diagonal, 1/30 of that outside it: details narrower
   /// than about that are bridged. Zero turns the fallback off.
   double WrapAlpha = 1.0 / 150.0;
+  /// Where a small contact cannot be resolved exactly, a vertex of the
+  /// surface poking through a wall far from it on the surface (a dent's tip
+  /// through the far side of a thin part, ContactSeparation.h) is moved back
+  /// behind the wall, this fraction of the bounding-box diagonal clear of it:
+  /// enough room for the medial axis to close round the tip at any sampling
+  /// the pipeline uses, and far below the spacing of its samples. Zero keeps
+  /// such a surface as it is (with a note).
+  double ContactGap = 1e-3;
   /// The crossings an earlier run found on the same input with the same
   /// options (its report's Crossings): the costly exact test is skipped.
   const std::vector<TriangleCrossing>* KnownCrossings = nullptr;
@@ -75,12 +83,14 @@ struct SurfacePreparationReport
   bool Repaired = false;    // the crossings were resolved (the counts above are the input's)
   double RemovedArea = 0.0; // of the input, inside the solid: removed by the repair
   /// Which repair ran: "resolved crossings" (the input's triangles cut
-  /// where they cross, the parts inside removed) or "alpha wrap" (the
-  /// fallback, a new surface round the input); empty without a repair.
+  /// where they cross, the parts inside removed), "alpha wrap" (the
+  /// fallback, a new surface round the input) or "pulled apart" (a small
+  /// contact's piercing vertices moved back, ContactGap); empty without a
+  /// repair.
   std::string RepairMethod;
   /// The largest distance from the repaired surface to the input, as a
   /// fraction of the bounding-box diagonal (0 for resolved crossings, which
-  /// are pieces of the input).
+  /// are pieces of the input; the largest move for a contact pulled apart).
   double RepairDeviation = 0.0;
   double Area = 0.0;
   double Volume = 0.0; // enclosed volume after orientation fixing
@@ -92,6 +102,11 @@ struct SurfacePreparationReport
 /// failing check (callers that fail must not use it).
 SurfacePreparationReport PrepareSurface(const TriangleMesh& input, TriangleMesh& output,
   const SurfacePreparationOptions& options = SurfacePreparationOptions());
+
+/// Whether a note of a report says that the repair moved the surface away
+/// from the input (wrapped it, or pulled a contact apart): filters show such
+/// notes as warnings.
+bool IsMovedSurfaceNote(const std::string& note);
 
 /// Area-weighted signed volume of a closed, oriented triangle mesh.
 double SignedVolume(const TriangleMesh& mesh);

@@ -134,55 +134,25 @@ bool FindHub(const MedialMesh& mesh, const std::vector<Index>& loop,
       }
     }
   }
-  if (edgeMiddles)
-  {
-    return false; // a part of a split cap: flat fans only
-  }
   // A cup: round a pocket of outside space (a dent whose tip stops short of
-  // the far side of a thin part) every flat disk on the loop crosses the
-  // pocket, but one bulging past the pocket's tip does not. The complex
-  // itself reaches past the tip, inside the surface: its vertices within
-  // the loop's reach of the centroid are tried as hubs, nearest first.
+  // the far side of a thin part; the loop's centroid is in it) every flat
+  // disk on the loop crosses the pocket, but one bulging past the pocket's
+  // tip does not. Its hub is a point inside the surface on a ray from the
+  // centroid: along the loop's axis both ways, and tilted off it (a pocket
+  // need not point along the axis), as far as 8 times the loop's reach; a
+  // wall thinner than the sampling (past the tip) is found where a step of
+  // the ray crosses the surface. (Loops whose centroid is inside keep flat
+  // caps: a cup there would span a part of the solid, not a pocket.)
+  if (edgeMiddles || queries.Inside(centroid))
+  {
+    return false;
+  }
   double reach = 0.0;
   for (Index v : loop)
   {
     reach = std::max(reach, Norm(mesh.Centers[v] - centroid));
   }
-  std::vector<std::pair<double, Index>> near;
-  for (Index v = 0; v < static_cast<Index>(mesh.Centers.size()); ++v)
-  {
-    const double distance = Norm(mesh.Centers[v] - centroid);
-    if (distance <= reach)
-    {
-      near.emplace_back(distance, v);
-    }
-  }
-  // Sorted by distance, then index: the order, and so the hub, is the same
-  // on every run. A loop round a handle has no hub at all: a bounded number
-  // of tries keeps it cheap.
-  constexpr std::size_t maxTries = 256;
-  const std::size_t tries = std::min(near.size(), maxTries + loop.size());
-  std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(tries), near.end());
-  std::vector<Index> sortedLoop(loop);
-  std::sort(sortedLoop.begin(), sortedLoop.end());
-  for (std::size_t k = 0, tried = 0; k < tries && tried < maxTries; ++k)
-  {
-    const Index v = near[k].second;
-    if (std::binary_search(sortedLoop.begin(), sortedLoop.end(), v))
-    {
-      continue;
-    }
-    ++tried;
-    if (seesAll(mesh.Centers[v]))
-    {
-      hub = mesh.Centers[v];
-      return true;
-    }
-  }
-  // Where the complex does not reach past the tip (the wall there thinner
-  // than the sampling could follow), points inside the surface along rays
-  // from the centroid: along the loop's axis both ways, and tilted off it
-  // (a pocket need not point along the axis), as far as 8 times the reach.
+
   Point3 axis{ 0.0, 0.0, 0.0 };
   for (std::size_t k = 0; k < loop.size(); ++k)
   {

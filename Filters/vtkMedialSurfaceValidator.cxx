@@ -39,6 +39,7 @@ int vtkMedialSurfaceValidator::RequestData(
   options.FixOrientation = this->FixOrientation;
   options.RepairSelfIntersections = this->RepairSelfIntersections;
   options.WrapAlpha = this->WrapAlpha;
+  options.ContactGap = this->ContactGap;
   const auto report = medialaxis::PrepareSurfacePolyData(input, output, options);
   this->UpdateProgress(1.0);
 
@@ -118,6 +119,7 @@ void vtkMedialSurfaceValidator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FixOrientation: " << this->FixOrientation << "\n";
   os << indent << "RepairSelfIntersections: " << this->RepairSelfIntersections << "\n";
   os << indent << "WrapAlpha: " << this->WrapAlpha << "\n";
+  os << indent << "ContactGap: " << this->ContactGap << "\n";
   os << indent << "Repaired: " << this->Repaired << "\n";
   os << indent << "Wrapped: " << this->Wrapped << "\n";
   os << indent << "RepairDeviation: " << this->RepairDeviation << "\n";

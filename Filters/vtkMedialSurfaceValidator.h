@@ -85,6 +85,15 @@ public:
   vtkGetMacro(WrapAlpha, double);
   ///@}
 
+  ///@{
+  /// How far behind a wall the repair moves a vertex poking through it (a
+  /// dent's tip through the far side of a thin part), as a fraction of the
+  /// bounding-box diagonal. 0 does not pull such contacts apart: they are
+  /// resolved exactly (or refused) as other crossings are. Default 0.001.
+  vtkSetClampMacro(ContactGap, double, 0.0, 0.01);
+  vtkGetMacro(ContactGap, double);
+  ///@}
+
   /// True when the last update produced a usable surface.
   vtkGetMacro(Valid, bool);
   /// Why the last update refused the surface ("" when valid).
@@ -131,6 +140,7 @@ protected:
   bool FixOrientation = true;
   bool RepairSelfIntersections = false;
   double WrapAlpha = 1.0 / 150.0;
+  double ContactGap = 1e-3;
 
   bool Valid = false;
   bool Repaired = false;

@@ -48,10 +48,10 @@ public:
   /// The repair's options. A preparation that succeeded without repairing
   /// anything gives the same result whether a repair was allowed or not (the
   /// one-click filter prepares with repair first, its stages without).
-  using RepairOptions = std::tuple<bool, double>;
+  using RepairOptions = std::tuple<bool, double, double>;
   static RepairOptions RepairOptionsOf(const SurfacePreparationOptions& o)
   {
-    return RepairOptions(o.RepairSelfIntersections, o.WrapAlpha);
+    return RepairOptions(o.RepairSelfIntersections, o.WrapAlpha, o.ContactGap);
   }
 
   bool FindPrepared(const Key& key, const SurfacePreparationOptions& options,

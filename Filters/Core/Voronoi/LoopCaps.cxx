@@ -43,33 +43,38 @@ bool InsideBetween(
   return false;
 }
 
-// Points of the segment from a to b inside the surface, nearest a first: the
-// inside ones of 64 steps along it, and for a step whose ends are outside
-// but which crosses the surface (a wall thinner than a step), a point inside
-// that wall.
+// Points of the first stretch of the segment from a (outside the surface)
+// to b inside the surface, nearest a first: the inside ones of 64 steps
+// along it, or where a step whose ends are outside crosses the surface (a
+// wall thinner than a step), a point inside that wall. The hub of a cup lies
+// just past a pocket's tip: farther stretches are not searched.
 std::vector<Point3> InsidePointsAlong(
   const Point3& a, const Point3& b, const TopologyRepairQueries& queries)
 {
   constexpr int steps = 64;
   std::vector<Point3> points;
   Point3 previous = a;
-  bool previousInside = queries.Inside(a);
   for (int i = 1; i <= steps; ++i)
   {
     const Point3 p = a + (i / double(steps)) * (b - a);
-    const bool inside = queries.Inside(p);
-    Point3 wall;
-    if (!inside && !previousInside && queries.Crosses(previous, p) &&
-      InsideBetween(previous, p, queries, wall))
-    {
-      points.push_back(wall);
-    }
-    if (inside)
+    if (queries.Inside(p))
     {
       points.push_back(p);
     }
+    else if (!points.empty())
+    {
+      break;
+    }
+    else if (queries.Crosses(previous, p))
+    {
+      Point3 wall;
+      if (InsideBetween(previous, p, queries, wall))
+      {
+        points.push_back(wall);
+        break;
+      }
+    }
     previous = p;
-    previousInside = inside;
   }
   return points;
 }

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <map>
 
@@ -27,6 +28,24 @@ TopologyRepairQueries BigBall()
   return { [](const Point3& p) { return Norm(p) < 10.0; },
     [](const Point3& p) { return 10.0 - Norm(p); },
     [](const Point3&, const Point3&) { return false; } };
+}
+
+// The segment test of a solid given by its inside test: a segment crosses
+// the surface where one of `steps` + 1 points along it is outside.
+template <typename Inside>
+std::function<bool(const Point3&, const Point3&)> CrossesBySampling(Inside inside, int steps)
+{
+  return [inside, steps](const Point3& a, const Point3& b)
+  {
+    for (int k = 0; k <= steps; ++k)
+    {
+      if (!inside(a + (static_cast<double>(k) / steps) * (b - a)))
+      {
+        return true;
+      }
+    }
+    return false;
+  };
 }
 
 // Adds vertices with radius 0.1 and one Atlas site each.
@@ -227,17 +246,7 @@ TEST(MedialTopologyRepair, DropsAnEdgeBridgingTwoSolids)
     [](const Point3& p) {
       return 1.5 - std::min(Norm(p - Point3{ -2.0, 0.0, 0.0 }), Norm(p - Point3{ 2.0, 0.0, 0.0 }));
     },
-    [insideEither](const Point3& a, const Point3& b)
-    {
-      for (int k = 0; k <= 1000; ++k)
-      {
-        if (!insideEither(a + (k / 1000.0) * (b - a)))
-        {
-          return true;
-        }
-      }
-      return false;
-    } };
+    CrossesBySampling(insideEither, 1000) };
   VoronoiMedialAxisResult result;
   AddDisk(result, 8, 0.5, { -2.0, 0.0, 0.0 });
   AddDisk(result, 8, 0.5, { 2.0, 0.0, 0.0 });
@@ -346,17 +355,7 @@ TEST(MedialTopologyRepair, CapsALoopBentRoundAConcavePartInSeveralFans)
       const double rho = std::hypot(p[0], p[1]);
       return std::min({ rho - 4.0, 6.0 - rho, 1.0 - std::abs(p[2]) });
     },
-    [inside](const Point3& a, const Point3& b)
-    {
-      for (int k = 0; k <= 2000; ++k)
-      {
-        if (!inside(a + (k / 2000.0) * (b - a)))
-        {
-          return true;
-        }
-      }
-      return false;
-    } };
+    CrossesBySampling(inside, 2000) };
   std::vector<Point3> path;
   for (int a = -140; a <= 140; a += 10)
   {
@@ -409,17 +408,7 @@ TEST(MedialTopologyRepair, CapsALoopRoundAPocketWithACupPastItsTip)
   auto inside = [inPocket](const Point3& p)
   { return std::abs(p[0]) < 5.0 && std::abs(p[1]) < 5.0 && std::abs(p[2]) < 1.0 && !inPocket(p); };
   const TopologyRepairQueries slab{ inside, [](const Point3& p) { return 1.0 - std::abs(p[2]); },
-    [inside](const Point3& a, const Point3& b)
-    {
-      for (int k = 0; k <= 2000; ++k)
-      {
-        if (!inside(a + (k / 2000.0) * (b - a)))
-        {
-          return true;
-        }
-      }
-      return false;
-    } };
+    CrossesBySampling(inside, 2000) };
   VoronoiMedialAxisResult result;
   AddTube(result, 16, 1.0, -0.5);
   ASSERT_EQ(EulerCharacteristic(result.Mesh), 0);

@@ -270,6 +270,7 @@ std::string RepairAndPrepare(const std::vector<Point3>& points, std::vector<Tria
 // report. Returns why it could not be done, or an empty string.
 std::string SeparateAndPrepare(const std::vector<Point3>& points,
   const std::vector<Triangle>& triangles, const std::vector<std::vector<Index>>& shells,
+  const std::vector<std::vector<Index>>& vertexTriangles,
   const std::vector<TriangleCrossing>& farApart, const SurfacePreparationReport& report,
   double diagonal, const SurfacePreparationOptions& options, TriangleMesh& output,
   SurfacePreparationReport& repaired)
@@ -292,14 +293,6 @@ std::string SeparateAndPrepare(const std::vector<Point3>& points,
     return separation.Error;
   }
   const std::vector<TriangleCrossing> left = FindSelfIntersections(separation.Points, triangles);
-  std::vector<std::vector<Index>> vertexTriangles(points.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    for (Index v : triangles[t])
-    {
-      vertexTriangles[v].push_back(static_cast<Index>(t));
-    }
-  }
   for (const TriangleCrossing& c : left)
   {
     if (!AreSurfaceNeighbours(triangles, vertexTriangles, c.A, c.B, options.LocalFoldRings))
@@ -580,8 +573,8 @@ SurfacePreparationReport PrepareSurface(
     if (options.RepairSelfIntersections && farApart && options.ContactGap > 0.0)
     {
       SurfacePreparationReport repaired;
-      notSeparated = SeparateAndPrepare(input.Points, triangles, members, farApartCrossings, report,
-        diagonal, options, output, repaired);
+      notSeparated = SeparateAndPrepare(input.Points, triangles, members, vertexTriangles,
+        farApartCrossings, report, diagonal, options, output, repaired);
       if (notSeparated.empty())
       {
         return repaired;

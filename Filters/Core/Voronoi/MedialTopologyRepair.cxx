@@ -97,7 +97,18 @@ std::size_t DropEdgesAcrossSurface(VoronoiMedialAxisResult& result,
   {
     return 0;
   }
-  auto isAcross = [&](Index a, Index b) { return across[EdgeId(edges, a, b)] != 0; };
+  // Only an edge between two ends of edges across is looked up (a binary
+  // search per triangle side was most of this step's time).
+  std::vector<char> end(mesh.Centers.size(), 0);
+  for (std::size_t e = 0; e < edges.size(); ++e)
+  {
+    if (across[e])
+    {
+      end[edges[e][0]] = end[edges[e][1]] = 1;
+    }
+  }
+  auto isAcross = [&](Index a, Index b)
+  { return end[a] && end[b] && across[EdgeId(edges, a, b)] != 0; };
   std::size_t out = 0;
   for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
   {

@@ -63,6 +63,47 @@ std::uint64_t EdgeKey(Index u, Index v)
   return static_cast<std::uint64_t>(std::min(u, v)) << 32 |
     static_cast<std::uint64_t>(std::max(u, v));
 }
+
+// Sorts the uses as std::sort would, in linear time: each into the bucket
+// of its smaller end (a counting sort), then each bucket (a few uses) on
+// its own.
+void SortUses(std::vector<EdgeUse>& uses, std::size_t nv)
+{
+  std::vector<std::size_t> start(nv + 1, 0);
+  for (const EdgeUse& u : uses)
+  {
+    const std::uint64_t smaller = u.Key >> 32;
+    if (smaller >= nv)
+    {
+      tbb::parallel_sort(uses.begin(), uses.end()); // (ids outside the vertices)
+      return;
+    }
+    ++start[smaller + 1];
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    start[v + 1] += start[v];
+  }
+  std::vector<EdgeUse> sorted(uses.size());
+  {
+    std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
+    for (const EdgeUse& u : uses)
+    {
+      sorted[cursor[u.Key >> 32]++] = u;
+    }
+  }
+  std::vector<EdgeUse>().swap(uses);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 4096),
+    [&](const tbb::blocked_range<std::size_t>& range)
+    {
+      for (std::size_t v = range.begin(); v != range.end(); ++v)
+      {
+        std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(start[v]),
+          sorted.begin() + static_cast<std::ptrdiff_t>(start[v + 1]));
+      }
+    });
+  uses.swap(sorted);
+}
 }
 
 HairErosionResult ErodeHair(
@@ -95,13 +136,20 @@ HairErosionResult ErodeHair(
   {
     uses.push_back({ EdgeKey(e[0], e[1]), -1, 0 });
   }
-  tbb::parallel_sort(uses.begin(), uses.end());
+  SortUses(uses, nv);
   std::vector<std::array<Index, 2>> edges;
   std::vector<int> faceCount;            // alive faces on each edge
   std::vector<char> edgeAlive, erodible; // erodible: not a line of the input
   std::vector<std::array<Index, 3>> faceEdges(nf);
   std::vector<Index> edgeFaceStart{ 0 }, edgeFaces; // every face of each edge
   edgeFaces.reserve(3 * nf);
+  // Most edges are on two faces: reserved for about that many.
+  const std::size_t edgeGuess = 3 * nf / 2 + m.Edges.size() + 1;
+  edges.reserve(edgeGuess);
+  faceCount.reserve(edgeGuess);
+  edgeAlive.reserve(edgeGuess);
+  erodible.reserve(edgeGuess);
+  edgeFaceStart.reserve(edgeGuess + 1);
   for (std::size_t i = 0; i < uses.size();)
   {
     const Index id = static_cast<Index>(edges.size());
@@ -182,6 +230,7 @@ HairErosionResult ErodeHair(
   }
   // A line left by the erosion with an end on nothing else goes too, its
   // end's Atlas passed to the other end.
+  std::vector<Index> both;
   auto erodeLine = [&](Index e)
   {
     if (!edgeAlive[e] || !erodible[e] || faceCount[e] != 0)
@@ -198,16 +247,23 @@ HairErosionResult ErodeHair(
         --degree[w];
         vertexAlive[v] = 0;
         ++result.RemovedVertices;
-        std::vector<Index> both;
+        // (w's previous list, swapped out, is the next union's room.)
+        both.clear();
         std::set_union(
           atlasBegin(w), atlasEnd(w), atlasBegin(v), atlasEnd(v), std::back_inserter(both));
         merged[w].swap(both);
         ownAtlas[w] = 1;
         std::vector<Index>().swap(merged[v]);
         ownAtlas[v] = 1;
+        // Only the edges erodeLine may take: no face goes while the edge
+        // queue has entries, so the others would be passed over.
         for (Index k = vertexEdgeStart[w]; k < vertexEdgeStart[w + 1]; ++k)
         {
-          edgeQueue.push_back(vertexEdges[k]);
+          const Index next = vertexEdges[k];
+          if (edgeAlive[next] && erodible[next] && faceCount[next] == 0)
+          {
+            edgeQueue.push_back(next);
+          }
         }
         return;
       }
@@ -298,6 +354,20 @@ HairErosionResult ErodeHair(
   // The eroded mesh, renumbered.
   std::vector<Index> newId(nv, -1);
   AtlasMedialMesh out;
+  const std::size_t keptVertices = nv - result.RemovedVertices;
+  out.Mesh.Centers.reserve(keptVertices);
+  out.Mesh.Radii.reserve(keptVertices);
+  out.AtlasOffsets.reserve(keptVertices + 1);
+  out.AtlasSites.reserve(mesh.AtlasSites.size());
+  out.Mesh.Faces.reserve(nf - result.RemovedTriangles);
+  if (!mesh.FeatureVertex.empty())
+  {
+    out.FeatureVertex.reserve(keptVertices);
+  }
+  if (mesh.SiteClearance.size() == nv)
+  {
+    out.SiteClearance.reserve(keptVertices);
+  }
   for (std::size_t v = 0; v < nv; ++v)
   {
     if (!vertexAlive[v])

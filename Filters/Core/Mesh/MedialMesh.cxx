@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Mesh/MedialMesh.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -219,30 +222,47 @@ std::vector<std::array<Index, 2>> AllEdges(const MedialMesh& mesh)
       [&](Index a, Index b)
       { larger[cursor[static_cast<std::size_t>(std::min(a, b))]++] = std::max(a, b); });
   }
-  std::size_t unique = 0;
-  for (std::size_t a = 0; a < n; ++a)
-  {
-    const auto first = larger.begin() + static_cast<std::ptrdiff_t>(start[a]);
-    const auto last = larger.begin() + static_cast<std::ptrdiff_t>(start[a + 1]);
-    std::sort(first, last);
-    for (auto i = first; i != last; ++i)
+  // Each row sorted and its distinct entries counted, then written at the
+  // row's offset: rows are independent, so in parallel.
+  std::vector<std::size_t> offset(n + 1, 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+    [&](const tbb::blocked_range<std::size_t>& range)
     {
-      unique += (i == first || *i != *(i - 1)) ? 1 : 0;
-    }
-  }
-  edges.reserve(unique);
-  for (std::size_t a = 0; a < n; ++a)
-  {
-    Index previous = -1;
-    for (std::size_t i = start[a]; i < start[a + 1]; ++i)
-    {
-      if (larger[i] != previous)
+      for (std::size_t a = range.begin(); a != range.end(); ++a)
       {
-        edges.push_back({ static_cast<Index>(a), larger[i] });
-        previous = larger[i];
+        const auto first = larger.begin() + static_cast<std::ptrdiff_t>(start[a]);
+        const auto last = larger.begin() + static_cast<std::ptrdiff_t>(start[a + 1]);
+        std::sort(first, last);
+        std::size_t unique = 0;
+        for (auto i = first; i != last; ++i)
+        {
+          unique += (i == first || *i != *(i - 1)) ? 1 : 0;
+        }
+        offset[a + 1] = unique;
       }
-    }
+    });
+  for (std::size_t a = 0; a < n; ++a)
+  {
+    offset[a + 1] += offset[a];
   }
+  edges.resize(offset[n]);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+    [&](const tbb::blocked_range<std::size_t>& range)
+    {
+      for (std::size_t a = range.begin(); a != range.end(); ++a)
+      {
+        std::size_t out = offset[a];
+        Index previous = -1;
+        for (std::size_t i = start[a]; i < start[a + 1]; ++i)
+        {
+          if (larger[i] != previous)
+          {
+            edges[out++] = { static_cast<Index>(a), larger[i] };
+            previous = larger[i];
+          }
+        }
+      }
+    });
   return edges;
 }
 

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Voronoi/CapPeeling.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <limits>
 
@@ -26,13 +29,24 @@ FaceIncidence::FaceIncidence(const MedialMesh& mesh)
   {
     this->FirstEdge[v + 1] += this->FirstEdge[v];
   }
-  for (std::size_t f = 0; f < mesh.Faces.size(); ++f)
-  {
-    const auto& t = mesh.Faces[f];
-    for (int k = 0; k < 3; ++k)
+  // The lookups in parallel (each triangle on its own), the counts after.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.Faces.size(), 4096),
+    [&](const tbb::blocked_range<std::size_t>& range)
     {
-      this->FaceEdges[f][k] = this->Id(t[k], t[(k + 1) % 3]);
-      ++this->FaceCount[this->FaceEdges[f][k]];
+      for (std::size_t f = range.begin(); f != range.end(); ++f)
+      {
+        const auto& t = mesh.Faces[f];
+        for (int k = 0; k < 3; ++k)
+        {
+          this->FaceEdges[f][k] = this->Id(t[k], t[(k + 1) % 3]);
+        }
+      }
+    });
+  for (const auto& sides : this->FaceEdges)
+  {
+    for (std::size_t e : sides)
+    {
+      ++this->FaceCount[e];
     }
   }
   for (std::size_t e = 0; e < this->Edges.size(); ++e)

@@ -39,12 +39,7 @@
  * The cheapest collapses whose edges lie at least five edges apart are made
  * at once, in parallel, in batches of up to 64 (field data CollapseBatches):
  * the result is the same at any thread count, though not exactly that of
- * strictly one collapse at a time. With PreserveSharpFeatures the collapses
- * are made strictly one at a time, in the greedy order: which medial
- * vertices end up on a fillet's centre line depends on the order, and
- * vtkFilletDetector's refinement of the line is sensitive to it. A second
- * thread then checks the next candidate's validity meanwhile and shares the
- * re-evaluation of the merged edges (the same result at any thread count).
+ * strictly one collapse at a time, with or without PreserveSharpFeatures.
  *
  * Output port 0: the simplified medial mesh (input units) with `Radius`,
  * the final Atlas (`AtlasSites`, `AtlasOffsets`, `AtlasCount`), point data

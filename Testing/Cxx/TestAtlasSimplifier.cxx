@@ -478,16 +478,21 @@ TEST(AtlasSimplifier, HandedOverInputGivesTheSameResult)
   EXPECT_GT(handed.ErodedTriangles + handed.Collapses, 0u);
 }
 
-// Without sharp features the collapses of distant edges are made in
-// parallel batches: the result must not depend on the thread count, and the
-// mesh must stay valid. With them, one collapse at a time.
-TEST(AtlasSimplifier, ParallelBatchesAreDeterministicAndValid)
+// The collapses of distant edges are made in parallel batches, with sharp
+// features (CAD) or without: the result must not depend on the thread
+// count, and the mesh must stay valid.
+class ParallelBatches : public ::testing::TestWithParam<bool>
 {
+};
+
+TEST_P(ParallelBatches, AreDeterministicAndValid)
+{
+  const bool sharp = GetParam();
   const TriangleMesh box = MakeRoundedBox({ 2.0, 1.5, 1.0 }, 0.2, 12);
   SimplifiedRun runs[3];
   for (int threads = 1; threads <= 3; ++threads)
   {
-    runs[threads - 1] = RunWithThreads(threads, [&] { return Simplify(box, 8000, 300, false); });
+    runs[threads - 1] = RunWithThreads(threads, [&] { return Simplify(box, 8000, 300, sharp); });
   }
   const AtlasSimplifierResult& first = runs[0].Result;
   const MedialMesh& m = first.Medial.Mesh;
@@ -511,14 +516,15 @@ TEST(AtlasSimplifier, ParallelBatchesAreDeterministicAndValid)
     EXPECT_EQ(runs[k].Result.Medial.AtlasSites, first.Medial.AtlasSites);
     EXPECT_EQ(runs[k].Result.Batches, first.Batches);
   }
-
-  const SimplifiedRun cad = Simplify(box, 8000, 300, true);
-  EXPECT_EQ(cad.Result.Batches, cad.Result.Collapses + cad.Result.RejectedCollapses);
 }
 
-// CAD mode collapses one at a time in the greedy order; with two threads
-// the next candidate is checked ahead on the second one. The result must be
-// that of the plain loop, bit for bit, at one thread and at two.
+INSTANTIATE_TEST_SUITE_P(AtlasSimplifier, ParallelBatches, ::testing::Values(false, true),
+  [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Sharp" : "Organic"; });
+
+// Without parallel batches the collapses are made one at a time in the
+// greedy order; with two threads the next candidate is checked ahead on the
+// second one. The result must be that of the plain loop, bit for bit, at one
+// thread and at two.
 TEST(AtlasSimplifier, CheckingAheadKeepsTheGreedyOrder)
 {
   const TriangleMesh box = MakeRoundedBox({ 2.0, 1.5, 1.0 }, 0.2, 12);
@@ -528,6 +534,7 @@ TEST(AtlasSimplifier, CheckingAheadKeepsTheGreedyOrder)
     AtlasSimplifierOptions options;
     options.TargetNumberOfVertices = 300;
     options.PreserveSharpFeatures = true;
+    options.ParallelBatches = false;
     options.CheckAhead = checkAhead;
     return SimplifyMedialAxis(initial.Initial, initial.Rvd, initial.Sites.Points, options);
   };
@@ -548,6 +555,7 @@ TEST(AtlasSimplifier, CheckingAheadKeepsTheGreedyOrder)
   }
   EXPECT_EQ(plain.Medial.Mesh.Centers.size(), 300u);
   EXPECT_TRUE(ValidateMedialMesh(plain.Medial.Mesh).IsValid());
+  EXPECT_EQ(plain.Batches, plain.Collapses + plain.RejectedCollapses); // one at a time
 }
 
 TEST(AtlasSimplifier, AtlasesKeepEverySite)

@@ -31,11 +31,7 @@ EdgeCollapseOptions CollapseOptions(const AtlasSimplifierOptions& o)
   c.StrictTopologyGuard = o.StrictTopologyGuard;
   c.PreventFolds = o.PreventFolds;
   c.StopWhenStalled = o.ErrorBound > 0.0;
-  // With sharp features (CAD) the strictly sequential order (checked ahead
-  // on a second thread, with the same result): which medial vertices end up
-  // on a fillet's centre line depends on the order, and the fillet
-  // detector's refinement of that line is sensitive to it.
-  c.MaximumBatch = o.PreserveSharpFeatures ? 1 : c.MaximumBatch;
+  c.MaximumBatch = o.ParallelBatches ? c.MaximumBatch : 1;
   c.CheckAhead = o.CheckAhead;
   c.Progress = o.Progress;
   return c;

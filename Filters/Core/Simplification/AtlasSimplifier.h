@@ -216,10 +216,17 @@ struct AtlasSimplifierOptions
   /// Refuse collapses that fold two triangles onto each other (dihedral
   /// angle below 10 degrees); allowed anyway once nothing else is left.
   bool PreventFolds = true;
-  /// With PreserveSharpFeatures, collapses are made one at a time in the
-  /// greedy order; with a second thread, the next candidate's validity is
-  /// checked there meanwhile (EdgeCollapseOptions::CheckAhead). The same
-  /// result either way; off only to compare.
+  /// The cheapest candidates whose edges lie at least five edges apart are
+  /// collapsed at once, in parallel, in batches of up to 64: the same result
+  /// at any thread count, though not exactly that of one collapse at a time.
+  /// Off: strictly one at a time in the greedy order (on CAD parts at 50,000
+  /// samples -> 5,000 spheres 30-40% slower, with the same Hausdorff
+  /// distances and triangle quality; kept to compare).
+  bool ParallelBatches = true;
+  /// With ParallelBatches off, a second thread checks the next candidate's
+  /// validity while the current one collapses
+  /// (EdgeCollapseOptions::CheckAhead). The same result either way; off only
+  /// to compare.
   bool CheckAhead = true;
   /// After the last collapse, fit the spheres to the surface with the
   /// connectivity fixed (Fitting/EnvelopeFit.h), through the sites and,

@@ -52,7 +52,12 @@ std::vector<double> EstimateLocalThickness(const TriangleMesh& surface,
         Point3 u, v;
         Frame(inward, u, v);
         lengths.clear();
-        for (int r = 0; r < rays; ++r)
+        // Once more than half the rays have reached MaximumThickness, the
+        // median is that whatever the others find (a hit is at most as far,
+        // up to rounding, and it could only take a place above the middle):
+        // the rest are not cast.
+        int atMaximum = 0;
+        for (int r = 0; r < rays && 2 * atMaximum <= rays; ++r)
         {
           Point3 direction = inward;
           if (r > 0)
@@ -70,6 +75,7 @@ std::vector<double> EstimateLocalThickness(const TriangleMesh& surface,
             if (reach < 2.0 * diagonal)
             {
               lengths.push_back(options.MaximumThickness); // at least this thick
+              ++atMaximum;
             }
           }
           // The first crossing must leave the solid: a hit on a face turned

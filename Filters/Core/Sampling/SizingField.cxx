@@ -20,14 +20,21 @@ namespace medialaxis
 namespace
 {
 // Lowers every value to at most its neighbours' plus `gradation` times their
-// distance (Dijkstra from the smallest values over the symmetric k-nearest
-// graph), so the spacing grows gradually away from a thin part.
+// distance over the symmetric k-nearest graph, so the spacing grows
+// gradually away from a thin part. The result is each value's minimum over
+// the paths to it (the sum along a path taken in its order): rounding is
+// monotone, so that minimum is the same whatever order the edges are
+// relaxed in. Hence only the points that lower a neighbour start the
+// search: on most surfaces they are few.
 void LimitGradation(const std::vector<Point3>& points, const KdTree& tree, double gradation,
   std::vector<double>& values)
 {
   const std::size_t n = points.size();
   constexpr std::size_t k = 8;
-  std::vector<std::vector<std::uint32_t>> neighbours(n);
+  // The k nearest of each point (itself left out), then the graph made
+  // symmetric, in compressed rows.
+  std::vector<std::uint32_t> nearest(n * k);
+  std::vector<std::uint8_t> found(n, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512),
     [&](const tbb::blocked_range<std::size_t>& r)
     {
@@ -36,28 +43,58 @@ void LimitGradation(const std::vector<Point3>& points, const KdTree& tree, doubl
       for (std::size_t i = r.begin(); i != r.end(); ++i)
       {
         tree.Nearest(points[i], k + 1, ids, d2);
+        std::uint8_t c = 0;
         for (std::uint32_t j : ids)
         {
-          if (j != i)
+          if (j != i && c < k)
           {
-            neighbours[i].push_back(j);
+            nearest[i * k + c++] = j;
           }
         }
+        found[i] = c;
       }
     });
-  for (std::uint32_t i = 0; i < n; ++i)
+  std::vector<std::size_t> start(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
   {
-    for (std::size_t a = 0, m = neighbours[i].size(); a < m; ++a)
+    start[i + 1] += found[i];
+    for (std::size_t c = 0; c < found[i]; ++c)
     {
-      neighbours[neighbours[i][a]].push_back(i); // duplicates are harmless
+      ++start[nearest[i * k + c] + 1];
     }
   }
-  using Entry = std::pair<double, std::uint32_t>; // ties go to the lower id
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    start[i + 1] += start[i];
+  }
+  std::vector<std::uint32_t> adjacent(start[n]);
+  {
+    std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      for (std::size_t c = 0; c < found[i]; ++c)
+      {
+        const std::uint32_t j = nearest[i * k + c];
+        adjacent[cursor[i]++] = j;
+        adjacent[cursor[j]++] = static_cast<std::uint32_t>(i);
+      }
+    }
+  }
+  auto limit = [&](std::uint32_t i, std::uint32_t j)
+  { return values[i] + gradation * std::sqrt(Distance2(points[i], points[j])); };
+  using Entry = std::pair<double, std::uint32_t>;
+  std::vector<Entry> seeds;
   for (std::uint32_t i = 0; i < n; ++i)
   {
-    queue.push({ values[i], i });
+    if (std::any_of(adjacent.begin() + static_cast<std::ptrdiff_t>(start[i]),
+          adjacent.begin() + static_cast<std::ptrdiff_t>(start[i + 1]),
+          [&](std::uint32_t j) { return limit(i, j) < values[j]; }))
+    {
+      seeds.emplace_back(values[i], i);
+    }
   }
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue(
+    std::greater<Entry>(), std::move(seeds));
   while (!queue.empty())
   {
     const auto [value, i] = queue.top();
@@ -66,9 +103,10 @@ void LimitGradation(const std::vector<Point3>& points, const KdTree& tree, doubl
     {
       continue; // a stale entry
     }
-    for (std::uint32_t j : neighbours[i])
+    for (std::size_t a = start[i]; a < start[i + 1]; ++a)
     {
-      const double limited = value + gradation * std::sqrt(Distance2(points[i], points[j]));
+      const std::uint32_t j = adjacent[a];
+      const double limited = limit(i, j);
       if (limited < values[j])
       {
         values[j] = limited;

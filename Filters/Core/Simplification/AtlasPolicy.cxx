@@ -81,10 +81,8 @@ double EnergyAt(
 }
 }
 
-AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
+AtlasSiteCells::AtlasSiteCells(const RestrictedVoronoiDiagram& rvd,
   const std::vector<Point3>& sites, const AtlasSimplifierOptions& options)
-  : Options(options)
-  , Rvd(rvd)
 {
   // Normalisation from the sites' bounding box (the surface's extent).
   Point3 lo{ 0, 0, 0 }, hi{ 0, 0, 0 };
@@ -96,9 +94,6 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
   this->UnitFrame.Origin = lo;
   this->UnitFrame.Scale = extent > 0.0 ? 1.0 / extent : 1.0;
   this->Diagonal = this->UnitFrame.Scale * std::sqrt(Distance2(lo, hi));
-  this->RaisingBound = UsesErrorBands(options);
-  this->ErrorBound =
-    (this->RaisingBound ? options.InitialErrorBand : options.ErrorBound) * this->Diagonal;
 
   // Per-cell quadrics from the RVD polygons (normal and area by Newell's
   // formula: every polygon is planar, a piece of one surface triangle).
@@ -108,7 +103,8 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
   {
     this->Site[i] = this->UnitFrame.To(sites[i]);
   }
-  if (this->ErrorBound > 0.0)
+  const double bound = UsesErrorBands(options) ? options.InitialErrorBand : options.ErrorBound;
+  if (bound * this->Diagonal > 0.0)
   {
     this->SiteTree = std::make_unique<KdTree>(this->Site);
   }
@@ -176,11 +172,39 @@ AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDi
   {
     this->Convex = rvd.ConvexFeature;
   }
-  if (rvd.ConcaveFeature.size() == ns && this->Options.InvaginatedTerm)
+  if (rvd.ConcaveFeature.size() == ns && options.InvaginatedTerm)
   {
     this->Invaginated = rvd.ConcaveFeature;
   }
+}
 
+AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
+  const std::vector<Point3>& sites, const AtlasSimplifierOptions& options)
+  : AtlasPolicy(input, rvd, std::make_unique<const AtlasSiteCells>(rvd, sites, options), options)
+{
+}
+
+AtlasPolicy::AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
+  std::unique_ptr<const AtlasSiteCells> cells, const AtlasSimplifierOptions& options)
+  : Options(options)
+  , Rvd(rvd)
+  , Cells(std::move(cells))
+  , UnitFrame(this->Cells->UnitFrame)
+  , Diagonal(this->Cells->Diagonal)
+  , SiteTree(this->Cells->SiteTree)
+  , CellQuadric(this->Cells->CellQuadric)
+  , CellArea(this->Cells->CellArea)
+  , CellReach(this->Cells->CellReach)
+  , SitePolygonOffsets(this->Cells->SitePolygonOffsets)
+  , SitePolygons(this->Cells->SitePolygons)
+  , Site(this->Cells->Site)
+  , Convex(this->Cells->Convex)
+  , Invaginated(this->Cells->Invaginated)
+{
+  this->RaisingBound = UsesErrorBands(options);
+  this->ErrorBound =
+    (this->RaisingBound ? options.InitialErrorBand : options.ErrorBound) * this->Diagonal;
+  const std::size_t ns = this->Site.size();
   // Vertices, Atlases and their quadrics.
   const MedialMesh& mesh = input.Mesh;
   const std::size_t nv = mesh.Centers.size();

@@ -32,6 +32,33 @@ struct Placement
   Sphere Target{};
 };
 
+// What the Atlas policy needs of the sites and their restricted Voronoi
+// cells alone, in the unit frame of the sites' bounding box: made apart from
+// the medial mesh (beside the hair erosion, which needs the mesh alone),
+// then handed to the policy. Not movable: SiteTree refers to Site.
+struct AtlasSiteCells
+{
+  AtlasSiteCells(const RestrictedVoronoiDiagram& rvd, const std::vector<Point3>& sites,
+    const AtlasSimplifierOptions& options);
+  AtlasSiteCells(const AtlasSiteCells&) = delete;
+  AtlasSiteCells& operator=(const AtlasSiteCells&) = delete;
+
+  Normalisation UnitFrame;
+  double Diagonal = 0.0; // of the sites' bounding box, in the unit frame
+  std::vector<Point3> Site;
+  std::unique_ptr<KdTree> SiteTree; // with an error bound: for balls poking out
+  std::vector<SphereQuadric> CellQuadric;
+  std::vector<double> CellArea;
+  // Squared distance from each site to the farthest vertex of its cell:
+  // every point of the cell lies within it.
+  std::vector<double> CellReach;
+  // The diagram's polygons of each cell: those of site s are
+  // SitePolygons[SitePolygonOffsets[s] .. SitePolygonOffsets[s + 1]).
+  std::vector<Index> SitePolygonOffsets;
+  std::vector<Index> SitePolygons;
+  std::vector<std::uint8_t> Convex, Invaginated;
+};
+
 // The Atlas energy of paper 000 as a collapse policy: each vertex carries
 // its Atlas and the quadric of its regular cells; feature vertices snap onto
 // sharp edges and stay there.
@@ -40,6 +67,9 @@ class AtlasPolicy final : public CollapsePolicy
 public:
   AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
     const std::vector<Point3>& sites, const AtlasSimplifierOptions& options);
+  /// With the sites' part made already (for the same rvd, sites and options).
+  AtlasPolicy(const AtlasMedialMesh& input, const RestrictedVoronoiDiagram& rvd,
+    std::unique_ptr<const AtlasSiteCells> cells, const AtlasSimplifierOptions& options);
 
   const Normalisation& Frame() const { return this->UnitFrame; }
   /// The diagonal of the sites' bounding box, in the unit frame.
@@ -99,24 +129,21 @@ private:
   }
 
   const AtlasSimplifierOptions& Options;
-  Normalisation UnitFrame;
-  double ErrorBound = 0.0;          // ErrorBound in the unit frame (0: none)
-  double Diagonal = 0.0;            // of the sites' bounding box, in the unit frame
-  bool RaisingBound = false;        // the bound rises at stalls (error bands)
-  std::unique_ptr<KdTree> SiteTree; // every site, with a bound: for balls poking out
-  // Per site.
-  std::vector<SphereQuadric> CellQuadric;
-  std::vector<double> CellArea;
-  // Squared distance from each site to the farthest vertex of its cell:
-  // every point of the cell lies within it.
-  std::vector<double> CellReach;
-  // The diagram's polygons of each cell: those of site s are
-  // SitePolygons[SitePolygonOffsets[s] .. SitePolygonOffsets[s + 1]).
   const RestrictedVoronoiDiagram& Rvd;
-  std::vector<Index> SitePolygonOffsets;
-  std::vector<Index> SitePolygons;
-  std::vector<Point3> Site;
-  std::vector<std::uint8_t> Convex, Invaginated;
+  // Per site (see AtlasSiteCells), read through the references below.
+  std::unique_ptr<const AtlasSiteCells> Cells;
+  const Normalisation& UnitFrame;
+  const double Diagonal;
+  const std::unique_ptr<KdTree>& SiteTree;
+  const std::vector<SphereQuadric>& CellQuadric;
+  const std::vector<double>& CellArea;
+  const std::vector<double>& CellReach;
+  const std::vector<Index>& SitePolygonOffsets;
+  const std::vector<Index>& SitePolygons;
+  const std::vector<Point3>& Site;
+  const std::vector<std::uint8_t>&Convex, &Invaginated;
+  double ErrorBound = 0.0;   // ErrorBound in the unit frame (0: none)
+  bool RaisingBound = false; // the bound rises at stalls (error bands)
   // Per vertex.
   std::vector<std::vector<Index>> Atlas;
   std::vector<SphereQuadric> AtlasQuadric; // regular cells of the Atlas, each once

@@ -49,16 +49,23 @@ Candidates UniformCandidates(const TriangleMesh& surface, std::size_t count, std
   Candidates candidates;
   candidates.Points.resize(count);
   candidates.Triangles.resize(count);
-  Random random(seed);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    const std::size_t t = PickTriangle(cumulative, random.Uniform());
-    const Triangle& tri = surface.Triangles[t];
-    const double r1 = random.Uniform(), r2 = random.Uniform(); // drawn in this order
-    candidates.Points[i] = PointInTriangle(
-      surface.Points[tri[0]], surface.Points[tri[1]], surface.Points[tri[2]], r1, r2);
-    candidates.Triangles[i] = static_cast<Index>(t);
-  }
+  const Random random(seed);
+  // Candidate i takes draws 3i, 3i + 1 and 3i + 2 of the stream: in parallel,
+  // the points of one sequential loop.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096),
+    [&](const tbb::blocked_range<std::size_t>& range)
+    {
+      Random draws = random.After(3 * range.begin());
+      for (std::size_t i = range.begin(); i != range.end(); ++i)
+      {
+        const std::size_t t = PickTriangle(cumulative, draws.Uniform());
+        const Triangle& tri = surface.Triangles[t];
+        const double r1 = draws.Uniform(), r2 = draws.Uniform(); // drawn in this order
+        candidates.Points[i] = PointInTriangle(
+          surface.Points[tri[0]], surface.Points[tri[1]], surface.Points[tri[2]], r1, r2);
+        candidates.Triangles[i] = static_cast<Index>(t);
+      }
+    });
   return candidates;
 }
 
@@ -105,22 +112,48 @@ Candidates AdaptiveCandidates(
   candidates.Points.reserve(count);
   candidates.Triangles.reserve(count);
   candidates.Spacing.reserve(count);
-  Random random(seed);
-  while (candidates.Points.size() < count)
+  const Random random(seed);
+  // Attempt j takes draws 4j to 4j + 3 of the stream. Attempts are made in
+  // parallel, a batch at a time, and kept in their order until there are
+  // enough: the candidates of one sequential loop.
+  struct Attempt
   {
-    const std::size_t t = PickTriangle(cumulative, random.Uniform());
-    const Triangle& tri = surface.Triangles[t];
-    const double r1 = random.Uniform(), r2 = random.Uniform(), keep = random.Uniform();
-    const Point3 p = PointInTriangle(
-      surface.Points[tri[0]], surface.Points[tri[1]], surface.Points[tri[2]], r1, r2);
-    const double h = constant[t] ? triangleSpacing[t] : field.Spacing(p);
-    const double ratio = triangleSpacing[t] / h;
-    if (keep < ratio * ratio)
+    Point3 P;
+    double Spacing;
+    Index Triangle;
+    bool Kept;
+  };
+  std::vector<Attempt> attempts;
+  for (std::size_t first = 0; candidates.Points.size() < count;)
+  {
+    const std::size_t batch = std::max<std::size_t>(4096, count - candidates.Points.size());
+    attempts.resize(batch);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch, 1024),
+      [&](const tbb::blocked_range<std::size_t>& range)
+      {
+        Random draws = random.After(4 * (first + range.begin()));
+        for (std::size_t j = range.begin(); j != range.end(); ++j)
+        {
+          const std::size_t t = PickTriangle(cumulative, draws.Uniform());
+          const Triangle& tri = surface.Triangles[t];
+          const double r1 = draws.Uniform(), r2 = draws.Uniform(), keep = draws.Uniform();
+          const Point3 p = PointInTriangle(
+            surface.Points[tri[0]], surface.Points[tri[1]], surface.Points[tri[2]], r1, r2);
+          const double h = constant[t] ? triangleSpacing[t] : field.Spacing(p);
+          const double ratio = triangleSpacing[t] / h;
+          attempts[j] = { p, h, static_cast<Index>(t), keep < ratio * ratio };
+        }
+      });
+    for (std::size_t j = 0; j < batch && candidates.Points.size() < count; ++j)
     {
-      candidates.Points.push_back(p);
-      candidates.Triangles.push_back(static_cast<Index>(t));
-      candidates.Spacing.push_back(h);
+      if (attempts[j].Kept)
+      {
+        candidates.Points.push_back(attempts[j].P);
+        candidates.Triangles.push_back(attempts[j].Triangle);
+        candidates.Spacing.push_back(attempts[j].Spacing);
+      }
     }
+    first += batch;
   }
   return candidates;
 }

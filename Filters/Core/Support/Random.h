@@ -28,6 +28,16 @@ public:
   /// Uniform in [0, 1) with 53 random bits.
   double Uniform() { return static_cast<double>(this->Next() >> 11) * 0x1.0p-53; }
 
+  /// The generator as it will be `draws` draws later (the state is a
+  /// counter: streams can be drawn from in parallel, each part from its own
+  /// offset, with the numbers of one sequential stream).
+  Random After(std::uint64_t draws) const
+  {
+    Random later(*this);
+    later.State += draws * 0x9E3779B97F4A7C15ull;
+    return later;
+  }
+
 private:
   std::uint64_t State;
 };

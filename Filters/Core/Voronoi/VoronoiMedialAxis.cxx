@@ -666,16 +666,32 @@ VoronoiMedialAxisResult ComputeVoronoiMedialAxis(const TriangleMesh& surface,
     result.FaceSitePair.reserve(result.FaceSitePair.size() + triangles);
     filtered.reserve(triangles);
   }
-  for (const Face& face : complete)
+  // The concave test of each face (a distance query for faces between two
+  // concave-feature sites), in parallel.
+  std::vector<char> spuriousFace(complete.size(), 0);
+  if (filtering)
   {
-    const Index s1 = face.Sites[0], s2 = face.Sites[1];
-    bool spurious = false;
-    if (filtering && concaveFeature[s1] && concaveFeature[s2])
-    {
-      const Point3 middle = 0.5 * (sites[s1] + sites[s2]);
-      spurious =
-        queries.Distance(middle) < options.ConcaveFilterAlpha * 0.5 * Norm(sites[s1] - sites[s2]);
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, complete.size(), 1024),
+      [&](const tbb::blocked_range<std::size_t>& r)
+      {
+        for (std::size_t f = r.begin(); f != r.end(); ++f)
+        {
+          const Index s1 = complete[f].Sites[0], s2 = complete[f].Sites[1];
+          if (concaveFeature[s1] && concaveFeature[s2])
+          {
+            const Point3 middle = 0.5 * (sites[s1] + sites[s2]);
+            spuriousFace[f] = queries.Distance(middle) <
+                options.ConcaveFilterAlpha * 0.5 * Norm(sites[s1] - sites[s2])
+              ? 1
+              : 0;
+          }
+        }
+      });
+  }
+  for (std::size_t f = 0; f < complete.size(); ++f)
+  {
+    const Face& face = complete[f];
+    const bool spurious = spuriousFace[f] != 0;
     const Index* p = polygons.data() + face.First;
     for (std::size_t k = 1; k + 1 < face.Size; ++k)
     {
